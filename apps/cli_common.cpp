@@ -1,0 +1,40 @@
+#include "cli_common.h"
+
+#include <cmath>
+#include <iostream>
+
+#include "metricmap/io/cloud_reader.h"
+#include "metricmap/io/cloud_writer.h"
+
+namespace metricmap::cli {
+
+const CLI::Validator kFinitePositive(
+    [](std::string& s) -> std::string {
+      double v = 0.0;
+      if (!CLI::detail::lexical_cast(s, v)) return "'" + s + "' is not a number";
+      if (!std::isfinite(v) || !(v > 0.0)) return "must be a finite number > 0, got " + s;
+      return std::string();
+    },
+    "POSITIVE");
+
+LoadReport loadWithWarnings(const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud) {
+  LoadReport report = loadCloud(path, cloud);
+  for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
+  return report;
+}
+
+void emit(const std::string& text, const std::string& path) {
+  if (path.empty()) {
+    std::cout << text << std::flush;
+  } else {
+    writeTextAtomic(path, text);
+  }
+}
+
+void addPcdFormatOption(CLI::App& app, std::string& format) {
+  app.add_option("--pcd-format", format, "Encoding of PCD files written")
+      ->check(CLI::IsMember({"ascii", "binary", "binary_compressed"}))
+      ->capture_default_str();
+}
+
+}  // namespace metricmap::cli

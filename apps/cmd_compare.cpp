@@ -1,0 +1,168 @@
+// metricmap compare FILE... --config ...: the grid-vs-octree study table over files x configs.
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_common.h"
+#include "commands.h"
+#include "metricmap/grid/occupancy_grid.h"
+#include "metricmap/octree/adaptive_octree.h"
+#include "pcl_peer.h"
+#include "stats_json.h"
+#include "study_config.h"
+#include "table.h"
+
+namespace metricmap::cli {
+namespace {
+
+struct CompareOptions {
+  std::vector<std::string> files;
+  std::vector<std::string> configs;
+  bool pcl_octree = false;
+  std::string format = "table", out;
+};
+
+struct Record {
+  std::string file;
+  std::size_t points = 0;
+  StudyConfig config;
+  GridStatistics grid;
+  OctreeStatistics octree;
+  double load_s = 0, grid_s = 0, octree_s = 0;
+  PclOctreeFigures pcl;
+};
+
+Record study(const std::string& file, const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
+             const StudyConfig& c, bool with_pcl) {
+  Record r;
+  r.file = file;
+  r.points = cloud->size();
+  r.config = c;
+  auto t = std::chrono::steady_clock::now();
+  OccupancyGrid<pcl::PointXYZ> grid;
+  grid.setCellSize(c.cell_size);
+  grid.setInputCloud(cloud);
+  grid.compute();
+  r.grid = grid.getStatistics();
+  r.grid_s = secondsSince(t);
+
+  t = std::chrono::steady_clock::now();
+  AdaptiveOctree<pcl::PointXYZ> octree;
+  octree.setMaxPointsPerLeaf(c.max_points);
+  octree.setMinCellSize(c.min_cell_size);
+  octree.setInputCloud(cloud);
+  octree.compute();
+  r.octree = octree.getStatistics();
+  r.octree_s = secondsSince(t);
+  if (with_pcl) r.pcl = runPclOctree(cloud, c.min_cell_size, c.max_points);
+  return r;
+}
+
+nlohmann::json toJson(const Record& r, bool with_pcl) {
+  nlohmann::json j = {
+      {"file", r.file},
+      {"points", r.points},
+      {"config",
+       {{"cell_size", r.config.cell_size},
+        {"min_cell_size", r.config.min_cell_size},
+        {"max_points", r.config.max_points}}},
+      {"grid", r.grid},
+      {"octree", r.octree},
+      {"seconds", {{"load", r.load_s}, {"grid", r.grid_s}, {"octree", r.octree_s}}}};
+  if (with_pcl) {
+    j["pcl_octree"] = {{"leaves", r.pcl.leaves}, {"depth", r.pcl.depth}, {"seconds", r.pcl.seconds}};
+  }
+  return j;
+}
+
+std::string render(const std::vector<Record>& records, const CompareOptions& o) {
+  if (o.format == "json") {
+    nlohmann::json a = nlohmann::json::array();
+    for (const Record& r : records) a.push_back(toJson(r, o.pcl_octree));
+    return a.dump(2) + "\n";
+  }
+  std::vector<std::string> header = {
+      "file", "cell_size", "min_cell_size", "max_points", "grid_total", "grid_occupied",
+      "grid_empty", "grid_mean", "octree_nodes", "octree_leaves", "octree_internal",
+      "octree_occupied", "octree_empty", "octree_mean", "octree_depth"};
+  if (o.pcl_octree) {
+    header.insert(header.end(), {"pcl_leaves", "pcl_depth"});
+  }
+  Table t(header);
+  const bool csv = o.format == "csv";
+  for (const Record& r : records) {
+    std::vector<std::string> row = {
+        r.file,
+        fixed(r.config.cell_size, csv ? 6 : 2),
+        fixed(r.config.min_cell_size, csv ? 6 : 2),
+        std::to_string(r.config.max_points),
+        std::to_string(r.grid.total_cells),
+        std::to_string(r.grid.occupied_cells),
+        std::to_string(r.grid.empty_cells),
+        fixed(r.grid.mean_points_per_occupied_cell, csv ? 6 : 2),
+        std::to_string(r.octree.total_nodes),
+        std::to_string(r.octree.leaf_nodes),
+        std::to_string(r.octree.internal_nodes),
+        std::to_string(r.octree.occupied_leaves),
+        std::to_string(r.octree.empty_leaves),
+        fixed(r.octree.mean_points_per_occupied_leaf, csv ? 6 : 2),
+        std::to_string(r.octree.max_depth)};
+    if (o.pcl_octree) {
+      row.insert(row.end(), {std::to_string(r.pcl.leaves), std::to_string(r.pcl.depth)});
+    }
+    t.addRow(row);
+  }
+  const TableStyle style = csv ? TableStyle::Csv
+                               : (o.format == "markdown" ? TableStyle::Markdown
+                                                         : TableStyle::Aligned);
+  return t.render(style);
+}
+
+void runCompare(const CompareOptions& o) {
+  std::vector<StudyConfig> configs;
+  for (const std::string& text : o.configs) {
+    StudyConfig c;
+    parseStudyConfig(text, c);  // already validated by the option's check
+    configs.push_back(c);
+  }
+  if (configs.empty()) configs = studyConfigs();
+  std::vector<Record> records;
+  for (const std::string& f : o.files) {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+    loadWithWarnings(f, *cloud);
+    const double load_s = secondsSince(t0);
+    for (const StudyConfig& c : configs) {
+      records.push_back(study(f, cloud, c, o.pcl_octree));
+      records.back().load_s = load_s;
+    }
+  }
+  emit(render(records, o), o.out);
+}
+
+}  // namespace
+
+void addCompareCommand(CLI::App& app) {
+  auto o = std::make_shared<CompareOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "compare", "Grid vs octree statistics over files x configurations (the study's table)");
+  sub->add_option("files", o->files, "Point clouds (.pcd, .ply, .bin)")->required();
+  sub->add_option("--config", o->configs,
+                  "cell_size=S,min_cell_size=M,max_points=N; repeatable. "
+                  "Default: the study's 1/1/100, 0.5/0.5/100, 2/1/200")
+      ->check(CLI::Validator(
+          [](std::string& s) {
+            StudyConfig c;
+            return parseStudyConfig(s, c);
+          },
+          "CONFIG"));
+  sub->add_flag("--pcl-octree", o->pcl_octree,
+                "Also run pcl::octree::OctreePointCloudPointVector (dynamic depth) on each job");
+  sub->add_option("--format", o->format, "Output format")
+      ->check(CLI::IsMember({"table", "markdown", "csv", "json"}))
+      ->capture_default_str();
+  sub->add_option("--out", o->out, "Write the output to this file instead of stdout");
+  sub->callback([o] { runCompare(*o); });
+}
+
+}  // namespace metricmap::cli

@@ -1,0 +1,14 @@
+#pragma once
+/// \file commands.h
+/// \brief Each subcommand registers its options and its action on the `metricmap` app.
+
+#include <CLI/CLI.hpp>
+
+namespace metricmap::cli {
+
+void addInfoCommand(CLI::App& app);
+void addGridCommand(CLI::App& app);
+void addOctreeCommand(CLI::App& app);
+void addCompareCommand(CLI::App& app);
+
+}  // namespace metricmap::cli

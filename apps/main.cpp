@@ -1,0 +1,42 @@
+// metricmap: metric maps from range data. One binary, one subcommand per job.
+#include <exception>
+#include <iostream>
+#include <new>
+
+#include <CLI/CLI.hpp>
+#include <pcl/console/print.h>
+
+#include "commands.h"
+#include "metricmap/version.h"
+
+int main(int argc, char** argv) {
+  // metricmap reports problems itself, one line each; PCL's own chatter would repeat them.
+  pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+
+  CLI::App app{"metricmap " METRICMAP_VERSION " - metric maps from range data"};
+  app.set_version_flag("--version", METRICMAP_VERSION);
+  app.require_subcommand(1);
+  metricmap::cli::addInfoCommand(app);
+  metricmap::cli::addGridCommand(app);
+  metricmap::cli::addOctreeCommand(app);
+  metricmap::cli::addCompareCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "metricmap: error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "metricmap: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

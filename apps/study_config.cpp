@@ -1,0 +1,57 @@
+#include "study_config.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace metricmap::cli {
+namespace {
+
+bool parsePositive(const std::string& s, float& v) {
+  char* end = nullptr;
+  const double d = std::strtod(s.c_str(), &end);
+  if (s.empty() || *end != '\0' || !std::isfinite(d) || !(d > 0.0)) return false;
+  v = static_cast<float>(d);
+  return v > 0.0f && std::isfinite(v);
+}
+
+bool parseCount(const std::string& s, std::size_t& v) {
+  if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos) return false;
+  char* end = nullptr;
+  const unsigned long long n = std::strtoull(s.c_str(), &end, 10);
+  if (*end != '\0' || n > 0xFFFFFFFFull) return false;
+  v = static_cast<std::size_t>(n);
+  return true;
+}
+
+}  // namespace
+
+std::string parseStudyConfig(const std::string& text, StudyConfig& out) {
+  bool seen[3] = {false, false, false};
+  std::istringstream is(text);
+  for (std::string item; std::getline(is, item, ',');) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) return "'" + item + "' is not key=value";
+    const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
+    if (key == "cell_size") {
+      if (!parsePositive(value, out.cell_size)) return "cell_size must be a finite number > 0, got '" + value + "'";
+      seen[0] = true;
+    } else if (key == "min_cell_size") {
+      if (!parsePositive(value, out.min_cell_size)) return "min_cell_size must be a finite number > 0, got '" + value + "'";
+      seen[1] = true;
+    } else if (key == "max_points") {
+      if (!parseCount(value, out.max_points)) return "max_points must be a whole number >= 0, got '" + value + "'";
+      seen[2] = true;
+    } else {
+      return "unknown key '" + key + "' (cell_size, min_cell_size, max_points)";
+    }
+  }
+  if (!seen[0] || !seen[1] || !seen[2]) return "needs cell_size, min_cell_size and max_points";
+  return std::string();
+}
+
+std::vector<StudyConfig> studyConfigs() {
+  return {{1.0f, 1.0f, 100}, {0.5f, 0.5f, 100}, {2.0f, 1.0f, 200}};
+}
+
+}  // namespace metricmap::cli

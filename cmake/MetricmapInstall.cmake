@@ -1,0 +1,23 @@
+# Install the library, its headers and a CMake package: find_package(metricmap) gives
+# metricmap::metricmap.
+include(CMakePackageConfigHelpers)
+
+install(TARGETS metricmap EXPORT metricmapTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/metricmap DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+  FILES_MATCHING PATTERN "*.h" PATTERN "*.hpp")
+install(FILES ${PROJECT_BINARY_DIR}/src/generated/metricmap/version.h
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/metricmap)
+
+set(config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/metricmap)
+install(EXPORT metricmapTargets NAMESPACE metricmap:: DESTINATION ${config_dir})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/metricmapConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/metricmapConfig.cmake INSTALL_DESTINATION ${config_dir})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/metricmapConfigVersion.cmake
+  COMPATIBILITY SameMajorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/metricmapConfig.cmake
+              ${PROJECT_BINARY_DIR}/metricmapConfigVersion.cmake
+  DESTINATION ${config_dir})

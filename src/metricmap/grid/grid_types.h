@@ -1,0 +1,62 @@
+#pragma once
+/// \file grid_types.h
+/// \brief Parameters, cells and statistics of metricmap::OccupancyGrid (no PCL needed).
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace metricmap {
+
+/// \brief Where cell (0, 0, 0) starts.
+enum class GridOrigin {
+  /// The study's partition: index = floor((p - cloud_min) / cell). Default.
+  CloudMinimum,
+  /// pcl::VoxelGrid's partition: index = floor(p / cell), computed in float as PCL does.
+  WorldAligned
+};
+
+/// \brief OccupancyGrid parameters.
+struct GridParams {
+  float cell_size = 1.0f;  ///< edge of a cubic cell, metres; finite and > 0
+  GridOrigin origin = GridOrigin::CloudMinimum;
+};
+
+/// \brief Figures of one grid, as in the study's table.
+struct GridStatistics {
+  std::uint64_t total_cells = 0;     ///< cells of the bounding volume: prod(floor(extent/cell)+1)
+  std::uint64_t occupied_cells = 0;  ///< cells holding at least one point
+  std::uint64_t empty_cells = 0;     ///< total_cells - occupied_cells
+  double mean_points_per_occupied_cell = 0.0;  ///< points / occupied_cells (0 when empty)
+  std::uint64_t points = 0;          ///< finite points binned (sum of cell counts)
+  std::uint64_t skipped_points = 0;  ///< NaN/Inf points ignored
+};
+
+/// \brief One occupied cell.
+struct GridCell {
+  std::array<std::int64_t, 3> index{};  ///< integer cell index (see GridOrigin)
+  std::uint64_t count = 0;              ///< points in the cell
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();  ///< mean of its points (double sums)
+  std::size_t first_point = 0;  ///< position in the input cloud of its first point
+};
+
+/// \brief The bounding volume the cells live in.
+struct GridLayout {
+  std::array<std::int64_t, 3> min_index{};  ///< index of the lowest cell per axis
+  std::array<std::uint64_t, 3> dims{};      ///< cells per axis
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  ///< world position of index (0, 0, 0)
+  double cell_size = 0.0;
+};
+
+/// \brief Everything a grid build produces. Cells are sorted by their linear index
+/// (x fastest, then y, then z), the order pcl::VoxelGrid outputs too.
+struct GridResult {
+  GridLayout layout;
+  std::vector<GridCell> cells;
+  GridStatistics stats;
+};
+
+}  // namespace metricmap

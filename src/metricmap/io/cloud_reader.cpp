@@ -1,0 +1,137 @@
+#include "metricmap/io/cloud_reader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <pcl/PCLPointCloud2.h>
+#include <pcl/conversions.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/io/ply_io.h>
+
+#include "metricmap/exceptions.h"
+#include "metricmap/io/kitti_bin.h"
+#include "metricmap/io/pcd_header.h"
+#include "metricmap/io/ply_check.h"
+
+namespace metricmap {
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  const auto slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+void readPcd(const std::string& path, pcl::PCLPointCloud2& blob, LoadReport& report) {
+  const PcdHeader h = checkPcdFile(path, report.skipped_lines);
+  report.format = "pcd " + h.data;
+  pcl::PCDReader reader;
+  int rc = -1;
+  if (h.data == "ascii") {
+    Eigen::Vector4f origin;
+    Eigen::Quaternionf orientation;
+    int version = 0, data_type = 0;
+    unsigned int data_idx = 0;
+    rc = reader.readHeader(path, blob, origin, orientation, version, data_type, data_idx);
+    std::istringstream body(h.ascii_body);
+    if (rc >= 0) rc = reader.readBodyASCII(body, blob, version);
+  } else {
+    rc = reader.read(path, blob);
+  }
+  if (rc < 0) throw InputError(path + ": pcl::io could not read this PCD file");
+  if (static_cast<std::uint64_t>(blob.width) * blob.height != h.points) {
+    throw InputError(path + ": read " + std::to_string(blob.width * blob.height) +
+                     " points, header says " + std::to_string(h.points));
+  }
+  if (report.skipped_lines > 0) {
+    report.warnings.push_back(path + ": skipped " + std::to_string(report.skipped_lines) +
+                              " malformed line(s) in the ascii body");
+  }
+}
+
+void readPly(const std::string& path, pcl::PCLPointCloud2& blob, LoadReport& report) {
+  checkPlyFile(path);
+  report.format = "ply";
+  pcl::PLYReader reader;
+  if (reader.read(path, blob) < 0) throw InputError(path + ": pcl::io could not read this PLY file");
+}
+
+void checkXyz(const std::string& path, const pcl::PCLPointCloud2& blob) {
+  for (const char* name : {"x", "y", "z"}) {
+    const auto it = std::find_if(blob.fields.begin(), blob.fields.end(),
+                                 [&](const pcl::PCLPointField& f) { return f.name == name; });
+    if (it == blob.fields.end()) throw InputError(path + ": no '" + name + "' field");
+    if (it->datatype != pcl::PCLPointField::FLOAT32 || it->count != 1) {
+      throw InputError(path + ": field '" + name + "' is not a single float32");
+    }
+  }
+}
+
+template <typename PointT>
+void dropNonFinite(pcl::PointCloud<PointT>& cloud, LoadReport& report) {
+  const std::size_t before = cloud.size();
+  auto finite = [](const PointT& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+  };
+  if (!std::all_of(cloud.begin(), cloud.end(), finite)) {
+    pcl::PointCloud<PointT> kept;
+    kept.header = cloud.header;
+    kept.sensor_origin_ = cloud.sensor_origin_;
+    kept.sensor_orientation_ = cloud.sensor_orientation_;
+    kept.reserve(before);
+    for (const PointT& p : cloud) {
+      if (finite(p)) kept.push_back(p);
+    }
+    cloud.swap(kept);
+  }
+  report.nonfinite_dropped = before - cloud.size();
+  cloud.width = static_cast<std::uint32_t>(cloud.size());
+  cloud.height = 1;
+  cloud.is_dense = true;
+}
+
+}  // namespace
+
+template <typename PointT>
+LoadReport loadCloud(const std::string& path, pcl::PointCloud<PointT>& cloud) {
+  LoadReport report;
+  report.path = path;
+  pcl::PCLPointCloud2 blob;
+  const std::string ext = lowerExtension(path);
+  if (ext == "pcd") {
+    readPcd(path, blob, report);
+  } else if (ext == "ply") {
+    readPly(path, blob, report);
+  } else if (ext == "bin") {
+    readKittiBin(path, blob);
+    report.format = "kitti bin";
+  } else {
+    throw InputError(path + ": unknown extension (expected .pcd, .ply or .bin)");
+  }
+  for (const auto& f : blob.fields) report.fields.push_back(f.name);
+  report.width = blob.width;
+  report.height = blob.height;
+  report.points_in_file = static_cast<std::uint64_t>(blob.width) * blob.height;
+  checkXyz(path, blob);
+  pcl::fromPCLPointCloud2(blob, cloud);
+  dropNonFinite(cloud, report);
+  if (cloud.empty()) {
+    throw InputError(path + ": no finite points (" + std::to_string(report.points_in_file) +
+                     " in the file, " + std::to_string(report.nonfinite_dropped) + " NaN/Inf)");
+  }
+  return report;
+}
+
+template LoadReport loadCloud(const std::string&, pcl::PointCloud<pcl::PointXYZ>&);
+template LoadReport loadCloud(const std::string&, pcl::PointCloud<pcl::PointXYZI>&);
+template LoadReport loadCloud(const std::string&, pcl::PointCloud<pcl::PointXYZRGB>&);
+
+}  // namespace metricmap

@@ -1,0 +1,192 @@
+#include "metricmap/io/pcd_header.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "metricmap/exceptions.h"
+
+namespace metricmap {
+namespace {
+
+constexpr std::size_t kMaxHeaderLines = 4096;
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw InputError(path + ": " + what);
+}
+
+std::vector<std::string> tokens(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream is(line);
+  for (std::string t; is >> t;) out.push_back(t);
+  return out;
+}
+
+std::uint64_t parseCount(const std::string& path, const std::string& key, const std::string& s,
+                         std::uint64_t max) {
+  if (s.empty() || s[0] == '-' || s[0] == '+') fail(path, key + " '" + s + "' is not a count");
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long v = std::strtoull(s.c_str(), &end, 10);
+  if (errno != 0 || *end != '\0' || v > max) fail(path, key + " '" + s + "' is not a valid count");
+  return v;
+}
+
+bool isNumber(const std::string& s) {
+  char* end = nullptr;
+  std::strtod(s.c_str(), &end);
+  return end != s.c_str() && *end == '\0';
+}
+
+void parseHeader(const std::string& path, std::istream& in, PcdHeader& h) {
+  bool have_points = false, have_width = false, have_height = false;
+  std::string line;
+  for (std::size_t n = 0; n < kMaxHeaderLines && std::getline(in, line); ++n) {
+    h.data_offset += line.size() + 1;
+    const std::vector<std::string> t = tokens(line);
+    if (t.empty() || t[0][0] == '#') continue;
+    const std::string& key = t[0];
+    if (key == "FIELDS" || key == "COLUMNS") {
+      h.fields.assign(t.begin() + 1, t.end());
+    } else if (key == "SIZE") {
+      for (std::size_t i = 1; i < t.size(); ++i) {
+        const auto v = parseCount(path, "SIZE", t[i], 8);
+        if (v != 1 && v != 2 && v != 4 && v != 8) fail(path, "SIZE " + t[i] + " is not 1, 2, 4 or 8");
+        h.sizes.push_back(static_cast<int>(v));
+      }
+    } else if (key == "TYPE") {
+      for (std::size_t i = 1; i < t.size(); ++i) {
+        if (t[i].size() != 1 || std::strchr("FIU", t[i][0]) == nullptr) {
+          fail(path, "TYPE '" + t[i] + "' is not F, I or U");
+        }
+        h.types.push_back(t[i][0]);
+      }
+    } else if (key == "COUNT") {
+      for (std::size_t i = 1; i < t.size(); ++i) {
+        const auto v = parseCount(path, "COUNT", t[i], 1u << 20);
+        if (v == 0) fail(path, "COUNT 0 in the header");
+        h.counts.push_back(static_cast<int>(v));
+      }
+    } else if (key == "WIDTH" && t.size() == 2) {
+      h.width = parseCount(path, "WIDTH", t[1], 0xFFFFFFFFull);
+      have_width = true;
+    } else if (key == "HEIGHT" && t.size() == 2) {
+      h.height = parseCount(path, "HEIGHT", t[1], 0xFFFFFFFFull);
+      have_height = true;
+    } else if (key == "POINTS" && t.size() == 2) {
+      h.points = parseCount(path, "POINTS", t[1], 0xFFFFFFFFull);
+      have_points = true;
+    } else if (key == "DATA") {
+      if (t.size() != 2 || (t[1] != "ascii" && t[1] != "binary" && t[1] != "binary_compressed")) {
+        fail(path, "DATA must be ascii, binary or binary_compressed");
+      }
+      h.data = t[1];
+      break;
+    }
+  }
+  if (h.data.empty()) fail(path, "not a PCD file (no DATA line in the header)");
+  if (h.fields.empty()) fail(path, "PCD header has no FIELDS");
+  if (h.counts.empty()) h.counts.assign(h.fields.size(), 1);
+  if (h.sizes.size() != h.fields.size() || h.types.size() != h.fields.size() ||
+      h.counts.size() != h.fields.size()) {
+    fail(path, "PCD header: FIELDS, SIZE, TYPE and COUNT have different lengths");
+  }
+  if (!have_width && !have_height && have_points) {
+    h.width = h.points;
+    h.height = 1;
+  }
+  if (!have_points) h.points = h.width * h.height;
+  if (h.width * h.height != h.points) {
+    fail(path, "PCD header: WIDTH x HEIGHT (" + std::to_string(h.width) + " x " +
+                   std::to_string(h.height) + ") differs from POINTS " + std::to_string(h.points));
+  }
+  for (std::size_t i = 0; i < h.fields.size(); ++i) {
+    h.point_bytes += static_cast<std::uint64_t>(h.sizes[i]) * h.counts[i];
+    h.values_per_point += static_cast<std::uint64_t>(h.counts[i]);
+  }
+}
+
+void checkAscii(const std::string& path, std::istream& in, PcdHeader& h,
+                std::uint64_t& skipped) {
+  std::uint64_t valid = 0, line_no = 0;
+  std::string line;
+  while (valid < h.points && std::getline(in, line)) {
+    ++line_no;
+    const std::vector<std::string> t = tokens(line);
+    if (t.empty()) continue;
+    if (t.size() != h.values_per_point) {
+      ++skipped;
+      continue;
+    }
+    for (const std::string& v : t) {
+      if (!isNumber(v)) {
+        fail(path, "body line " + std::to_string(line_no) + ": '" + v.substr(0, 32) +
+                       "' is not a number");
+      }
+    }
+    ++valid;
+    h.ascii_body += line;
+    h.ascii_body += '\n';
+  }
+  if (valid < h.points) {
+    fail(path, "truncated ascii body: " + std::to_string(valid) + " of " +
+                   std::to_string(h.points) + " points");
+  }
+}
+
+void checkBinary(const std::string& path, std::istream& in, const PcdHeader& h,
+                 std::uint64_t file_size) {
+  const std::uint64_t body = file_size - std::min(file_size, h.data_offset);
+  const std::uint64_t need = h.points * h.point_bytes;
+  if (h.data == "binary") {
+    if (need > body) {
+      fail(path, "truncated binary body: header needs " + std::to_string(need) +
+                     " bytes, file has " + std::to_string(body));
+    }
+    return;
+  }
+  std::uint32_t sizes[2] = {0, 0};
+  in.read(reinterpret_cast<char*>(sizes), sizeof(sizes));
+  if (!in) fail(path, "truncated binary_compressed body (no size block)");
+  if (sizes[1] != need) {
+    fail(path, "binary_compressed body unpacks to " + std::to_string(sizes[1]) +
+                   " bytes, header needs " + std::to_string(need));
+  }
+  if (static_cast<std::uint64_t>(sizes[0]) + 8 > body) {
+    fail(path, "truncated binary_compressed body: " + std::to_string(sizes[0]) +
+                   " compressed bytes announced, " + std::to_string(body) + " present");
+  }
+  if (need > 0 && sizes[0] == 0) fail(path, "binary_compressed body is empty");
+}
+
+}  // namespace
+
+PcdHeader checkPcdFile(const std::string& path, std::uint64_t& skipped_lines) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
+  in.seekg(0, std::ios::end);
+  const std::streamoff end = in.tellg();
+  if (end < 0) fail(path, "cannot read (not a regular file?)");
+  const auto file_size = static_cast<std::uint64_t>(end);
+  if (file_size == 0) fail(path, "empty file");
+  in.seekg(0);
+  PcdHeader h;
+  parseHeader(path, in, h);
+  if (h.points * h.point_bytes / std::max<std::uint64_t>(h.point_bytes, 1) != h.points) {
+    fail(path, "PCD header: POINTS x point size overflows");
+  }
+  skipped_lines = 0;
+  if (h.data == "ascii") {
+    checkAscii(path, in, h, skipped_lines);
+  } else {
+    in.clear();
+    in.seekg(static_cast<std::streamoff>(h.data_offset));
+    checkBinary(path, in, h, file_size);
+  }
+  return h;
+}
+
+}  // namespace metricmap

@@ -1,0 +1,60 @@
+#pragma once
+
+#include <stdexcept>
+
+#include "metricmap/common/point_span_pcl.h"
+#include "metricmap/octree/adaptive_octree.h"
+
+namespace metricmap {
+
+template <typename PointT>
+void AdaptiveOctree<PointT>::setMinCellSize(float min_cell_size) {
+  OctreeParams p = params_;
+  p.min_cell_size = min_cell_size;
+  validateOctreeParams(p);
+  params_ = p;
+}
+
+template <typename PointT>
+void AdaptiveOctree<PointT>::setRootBox(const Eigen::Vector3d& min, const Eigen::Vector3d& max) {
+  OctreeParams p = params_;
+  p.has_root_box = true;
+  p.root_min = min;
+  p.root_max = max;
+  validateOctreeParams(p);
+  params_ = p;
+}
+
+template <typename PointT>
+void AdaptiveOctree<PointT>::compute() {
+  if (!input_) throw std::invalid_argument("AdaptiveOctree: no input cloud set");
+  const pcl::Indices* idx = (fake_indices_ || !indices_) ? nullptr : indices_.get();
+  result_ = buildOctree(makePointSpan(*input_, idx), params_);
+}
+
+template <typename PointT>
+std::vector<int> AdaptiveOctree<PointT>::getPointIndices(std::size_t node_id) const {
+  const OctreeNode& n = result_.nodes.at(node_id);
+  const auto first = result_.point_order.begin() + static_cast<std::ptrdiff_t>(n.first_point);
+  return std::vector<int>(first, first + static_cast<std::ptrdiff_t>(n.count));
+}
+
+template <typename PointT>
+void AdaptiveOctree<PointT>::applyFilter(PointCloud& output) {
+  compute();
+  output.clear();
+  output.reserve(result_.occupied_leaves.size());
+  for (std::size_t id : result_.occupied_leaves) {
+    const OctreeNode& n = result_.nodes[id];
+    PointT p = (*input_)[result_.point_order[n.first_point]];
+    p.x = static_cast<float>(n.mean.x());
+    p.y = static_cast<float>(n.mean.y());
+    p.z = static_cast<float>(n.mean.z());
+    output.push_back(p);
+  }
+  output.width = static_cast<std::uint32_t>(output.size());
+  output.height = 1;
+  output.is_dense = true;
+}
+
+}  // namespace metricmap

@@ -1,0 +1,68 @@
+#pragma once
+/// \file octree_types.h
+/// \brief Parameters, nodes and statistics of metricmap::AdaptiveOctree (no PCL needed).
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace metricmap {
+
+/// \brief Deepest level a node can reach: 21 levels fill a 63-bit Morton key. Nodes at this
+/// depth are leaves whatever they hold, so identical points, min_cell_size 0 or max_points 0
+/// always terminate.
+constexpr unsigned kOctreeMaxDepth = 21;
+
+/// \brief AdaptiveOctree parameters.
+struct OctreeParams {
+  std::size_t max_points_per_leaf = 100;  ///< split while a node holds more than this
+  float min_cell_size = 1.0f;  ///< ... and its largest edge is longer than this (>= 0)
+  bool cubic_root = false;     ///< root = cube of the largest extent instead of the bbox
+  bool has_root_box = false;   ///< use root_min / root_max instead of the cloud's bounds
+  Eigen::Vector3d root_min = Eigen::Vector3d::Zero();
+  Eigen::Vector3d root_max = Eigen::Vector3d::Zero();
+};
+
+/// \brief Figures of one octree, as in the study's table.
+struct OctreeStatistics {
+  std::uint64_t total_nodes = 0;
+  std::uint64_t leaf_nodes = 0;
+  std::uint64_t internal_nodes = 0;
+  std::uint64_t occupied_leaves = 0;
+  std::uint64_t empty_leaves = 0;
+  double mean_points_per_occupied_leaf = 0.0;  ///< points / occupied_leaves (0 when empty)
+  std::uint64_t points = 0;                    ///< sum of leaf counts
+  unsigned max_depth = 0;                      ///< deepest node (root = 0)
+  std::uint64_t skipped_points = 0;  ///< NaN/Inf points, and points outside a given root box
+};
+
+/// \brief One node. A child's bounds halve its parent's at mid = (lo + hi) / 2, in double; a
+/// point goes to the upper half of an axis iff its coordinate >= the node's midpoint.
+struct OctreeNode {
+  static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  Eigen::Vector3d min = Eigen::Vector3d::Zero();
+  Eigen::Vector3d max = Eigen::Vector3d::Zero();
+  unsigned depth = 0;
+  std::uint64_t count = 0;                          ///< points inside
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();  ///< their mean (zero when empty)
+  std::size_t first_child = kNone;  ///< children are first_child .. first_child + 7
+  std::size_t parent = kNone;
+  std::size_t first_point = 0;  ///< its points: point_order[first_point, first_point + count)
+
+  bool isLeaf() const { return first_child == kNone; }
+  /// \brief Child `octant` (bit 0: upper x, bit 1: upper y, bit 2: upper z).
+  std::size_t child(unsigned octant) const { return first_child + octant; }
+};
+
+/// \brief Everything an octree build produces. nodes[0] is the root.
+struct OctreeResult {
+  std::vector<OctreeNode> nodes;
+  std::vector<std::uint32_t> point_order;  ///< input positions, grouped leaf by leaf
+  std::vector<std::size_t> occupied_leaves;  ///< node ids in Morton (depth-first) order
+  OctreeStatistics stats;
+};
+
+}  // namespace metricmap
