@@ -32,7 +32,7 @@ constexpr unsigned kTableLevels = 16;  // breakpoint tables hold at most 2^16 + 
 struct Frame {
   double min[3];
   double max[3];
-  unsigned levels;  // nodes at depth < levels may split (edge > min_cell_size)
+  unsigned levels;  // depth of the Morton keys: no node at this depth or deeper can split
   unsigned table_levels;
   std::vector<double> breaks[3];  // 2^table_levels + 1 boundaries per axis
 
@@ -85,11 +85,14 @@ Frame makeFrame(const Bounds& b, const OctreeParams& params) {
   if (params.cubic_root) {
     for (int a = 0; a < 3; ++a) f.max[a] = f.min[a] + max_ext;
   }
+  // Node edges are halved with rounding, so allow one level more than max_ext / 2^d suggests;
+  // the split test itself looks at each node's own edges.
   f.levels = 0;
   while (f.levels < kOctreeMaxDepth &&
          std::ldexp(max_ext, -static_cast<int>(f.levels)) > params.min_cell_size) {
     ++f.levels;
   }
+  if (max_ext > 0.0) f.levels = std::min(kOctreeMaxDepth, f.levels + 1);
   f.buildTables();
   return f;
 }
@@ -150,7 +153,8 @@ OctreeResult buildOctree(const PointSpan& points, const OctreeParams& params) {
     const std::size_t id = stack.back();
     stack.pop_back();
     const OctreeNode node = r.nodes[id];
-    const bool split = node.count > params.max_points_per_leaf && node.depth < frame.levels;
+    const bool split = node.count > params.max_points_per_leaf && node.depth < frame.levels &&
+                       (node.max - node.min).maxCoeff() > params.min_cell_size;
     if (!split) continue;
     const unsigned shift = 3 * (frame.levels - 1 - node.depth);
     const std::size_t first_child = r.nodes.size();
