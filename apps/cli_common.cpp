@@ -17,6 +17,15 @@ const CLI::Validator kFinitePositive(
     },
     "POSITIVE");
 
+const CLI::Validator kCount(
+    [](std::string& s) -> std::string {
+      if (s.empty() || s.size() > 18 || s.find_first_not_of("0123456789") != std::string::npos) {
+        return "must be a whole number >= 0, got '" + s + "'";
+      }
+      return std::string();
+    },
+    "COUNT");
+
 LoadReport loadWithWarnings(const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud) {
   LoadReport report = loadCloud(path, cloud);
   for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";

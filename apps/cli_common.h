@@ -17,6 +17,9 @@ namespace metricmap::cli {
 /// \brief A finite number > 0 (CLI11's PositiveNumber lets NaN through).
 extern const CLI::Validator kFinitePositive;
 
+/// \brief A whole number >= 0 written in decimal digits.
+extern const CLI::Validator kCount;
+
 /// \brief Seconds since `start`.
 inline double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -86,7 +86,7 @@ void addOctreeCommand(CLI::App& app) {
   sub->add_option("file", o->file, "Point cloud (.pcd, .ply, .bin)")->required();
   sub->add_option("--max-points", o->max_points, "Split nodes holding more points than this")
       ->required()
-      ->check(CLI::NonNegativeNumber);
+      ->check(kCount);
   sub->add_option("--min-cell-size", o->min_cell_size,
                   "Do not split nodes whose largest edge is <= this (metres)")
       ->required()

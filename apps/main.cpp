@@ -20,6 +20,15 @@ int main(int argc, char** argv) {
   metricmap::cli::addGridCommand(app);
   metricmap::cli::addOctreeCommand(app);
   metricmap::cli::addCompareCommand(app);
+  if (argc > 1 && argv[1][0] != '-') {
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->check_name(argv[1]);
+    if (!known) {
+      std::cerr << "metricmap: usage: unknown subcommand '" << argv[1]
+                << "' (info, grid, octree, compare; see --help)\n";
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -29,7 +38,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    std::cerr << "metricmap: usage: " << e.what() << " (see --help)\n";
     return 2;
   } catch (const std::bad_alloc&) {
     std::cerr << "metricmap: error: out of memory\n";

@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include <pcl/exceptions.h>
 #include <pcl/io/pcd_io.h>
 
 namespace metricmap {
@@ -40,14 +41,18 @@ void savePcdAtomic(const std::string& path, const pcl::PointCloud<PointT>& cloud
   const std::string tmp = temporaryName(path);
   pcl::PCDWriter writer;
   int rc = -1;
-  switch (format) {
-    case PcdFormat::Ascii: rc = writer.writeASCII(tmp, cloud, 8); break;
-    case PcdFormat::Binary: rc = writer.writeBinary(tmp, cloud); break;
-    case PcdFormat::BinaryCompressed: rc = writer.writeBinaryCompressed(tmp, cloud); break;
+  try {
+    switch (format) {
+      case PcdFormat::Ascii: rc = writer.writeASCII(tmp, cloud, 8); break;
+      case PcdFormat::Binary: rc = writer.writeBinary(tmp, cloud); break;
+      case PcdFormat::BinaryCompressed: rc = writer.writeBinaryCompressed(tmp, cloud); break;
+    }
+  } catch (const pcl::PCLException&) {
+    rc = -1;
   }
   if (rc != 0) {
     std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": cannot write PCD");
+    throw std::runtime_error(path + ": cannot write PCD (missing directory or no permission?)");
   }
   commit(tmp, path);
 }

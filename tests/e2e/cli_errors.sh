@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Bad input and bad usage: a clear one-line message, exit 1 (2 for usage), no crash, no hang,
+# no output file left behind.
+MM=$1
+DATA=$2
+source "$(dirname "$0")/lib.sh"
+scan=$DATA/ua_mapas_metricos_pcd/museo000.pcd
+
+# Usage errors: exit 2.
+for v in 0 -1 nan inf -inf abc ""; do
+  expect 2 "--cell-size" -- "$MM" grid "$scan" --cell-size "$v"
+done
+for v in 0 -0.5 nan abc; do
+  expect 2 "--min-cell-size" -- "$MM" octree "$scan" --max-points 100 --min-cell-size "$v"
+done
+expect 2 "--max-points" -- "$MM" octree "$scan" --max-points -5 --min-cell-size 1
+expect 2 "--max-points" -- "$MM" octree "$scan" --max-points 1.5 --min-cell-size 1
+expect 2 "--bogus" -- "$MM" grid "$scan" --cell-size 1 --bogus
+expect 2 "--cell-size is required" -- "$MM" grid "$scan"
+expect 2 "cell_size must be" -- "$MM" compare "$scan" --config cell_size=0,min_cell_size=1,max_points=3
+expect 2 "unknown key" -- "$MM" compare "$scan" --config cell=1,min_cell_size=1,max_points=3
+expect 2 "max_points must be" -- "$MM" compare "$scan" --config cell_size=1,min_cell_size=1,max_points=-3
+expect 2 "needs cell_size" -- "$MM" compare "$scan" --config cell_size=1
+expect 2 "--format" -- "$MM" compare "$scan" --format xml
+expect 2 "--pcd-format" -- "$MM" grid "$scan" --cell-size 1 --pcd-format text
+expect 2 "subcommand" -- "$MM"
+expect 2 "frobnicate" -- "$MM" frobnicate
+
+# Input errors: exit 1, the message names the file.
+milk=$DATA/pcl_test_pcd/milk.pcd
+hdr='VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 3\nHEIGHT 1\nPOINTS 3\n'
+: >"$tmp/empty.pcd"
+tail -c 4096 "$DATA/pcl_test_pcd/milk.pcd" >"$tmp/garbage.pcd"
+printf "${hdr}DATA ascii\n1 2 3\n4 5 6\n" >"$tmp/trunc.pcd"
+printf "${hdr}DATA ascii\n1 2 3\n4 5\n6 7 8\n" >"$tmp/ragged.pcd"
+printf "${hdr}DATA binary\n0123456789" >"$tmp/truncbin.pcd"
+printf "${hdr}DATA ascii\nnan nan nan\nnan 0 0\n0 nan 1\n" >"$tmp/allnan.pcd"
+printf "${hdr/WIDTH 3/WIDTH 4294967295}" | sed 's/POINTS 3/POINTS 4294967295/' >"$tmp/absurd.pcd"
+printf "DATA binary\n0123456789" >>"$tmp/absurd.pcd"
+head -c 40000 "$milk" >"$tmp/cutcompressed.pcd"
+cp "$milk" "$tmp/corrupt.pcd"
+printf '\xff%.0s' $(seq 1 3000) | dd of="$tmp/corrupt.pcd" bs=1 seek=400 conv=notrunc status=none
+head -c 17 /dev/zero >"$tmp/scan.bin"
+echo "1 2 3" >"$tmp/cloud.txt"
+for f in empty garbage trunc ragged truncbin allnan absurd cutcompressed corrupt; do
+  expect 1 "$tmp/$f.pcd" -- "$MM" grid "$tmp/$f.pcd" --cell-size 1 --out "$tmp/out_$f.pcd"
+  check "no output left for $f" test ! -e "$tmp/out_$f.pcd"
+  expect 1 "$tmp/$f.pcd" -- "$MM" octree "$tmp/$f.pcd" --max-points 10 --min-cell-size 1
+done
+expect 1 "$tmp/scan.bin" -- "$MM" info "$tmp/scan.bin"
+expect 1 "$tmp/cloud.txt" -- "$MM" info "$tmp/cloud.txt"
+expect 1 "$tmp/missing.pcd" -- "$MM" compare "$tmp/missing.pcd"
+expect 1 "$tmp/missing.pcd" -- "$MM" compare "$scan" "$tmp/missing.pcd" --out "$tmp/study.md"
+check "no table left when one input is bad" test ! -e "$tmp/study.md"
+
+# Output errors: exit 1, nothing half-written.
+expect 1 "$tmp/nodir/means.pcd" -- "$MM" grid "$scan" --cell-size 1 --out "$tmp/nodir/means.pcd"
+expect 1 "$tmp/nodir/cells.csv" -- "$MM" grid "$scan" --cell-size 1 --cells "$tmp/nodir/cells.csv"
+check "no temporary files left" test -z "$(find "$tmp" -name '*.tmp-*')"
+finish

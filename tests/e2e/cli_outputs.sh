@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# The subcommands' outputs: formats parse, written files read back, figures agree across commands.
+MM=$1
+DATA=$2
+source "$(dirname "$0")/lib.sh"
+scan=$DATA/ua_mapas_metricos_pcd/museo000.pcd
+
+check "--help works" "$MM" --help >/dev/null
+check "grid --help works" "$MM" grid --help >/dev/null
+check "info json" bash -c "'$MM' info '$scan' --format json >'$tmp/info.json'"
+check "info reports 79149 points" grep -q '"points": 79149' "$tmp/info.json"
+
+for fmt in ascii binary binary_compressed; do
+  check "grid --out ($fmt)" "$MM" grid "$scan" --cell-size 0.5 --out "$tmp/g_$fmt.pcd" \
+    --pcd-format "$fmt" --cells "$tmp/cells.csv" --format json >"$tmp/grid.json"
+  check "means file is $fmt" grep -aq "^DATA $fmt" "$tmp/g_$fmt.pcd"
+  check "means file has one point per occupied cell" bash -c \
+    "'$MM' info '$tmp/g_$fmt.pcd' --format json | grep -q '\"points\": 1192'"
+done
+check "grid json has the occupied count" grep -q '"occupied_cells": 1192' "$tmp/grid.json"
+check "cells.csv has a header and 1192 rows" test "$(wc -l <"$tmp/cells.csv")" = 1193
+check "cells.csv counts add up to every point" \
+  test "$(awk -F, 'NR>1{s+=$4} END{print s}' "$tmp/cells.csv")" = 79149
+
+check "octree --leaves" "$MM" octree "$scan" --max-points 100 --min-cell-size 0.5 \
+  --leaves "$tmp/leaves.csv" --out "$tmp/o.pcd" --format csv >"$tmp/octree.csv"
+check "octree csv row" grep -q ",4033,3529,504,1735,1794," "$tmp/octree.csv"
+check "leaves.csv has every leaf" test "$(wc -l <"$tmp/leaves.csv")" = 3530
+check "leaf counts add up to every point" \
+  test "$(awk -F, 'NR>1{s+=$9} END{print s}' "$tmp/leaves.csv")" = 79149
+
+check "compare markdown" "$MM" compare "$scan" --format markdown --out "$tmp/study.md"
+check "markdown has 3 default configs" test "$(grep -c museo000 "$tmp/study.md")" = 3
+check "compare --pcl-octree json" bash -c \
+  "'$MM' compare '$scan' --pcl-octree --format json | grep -q pcl_octree"
+check "kitti bin accepted" "$MM" grid "$DATA/kitti_odometry_00/sequences/00/velodyne/000000.bin" \
+  --cell-size 0.1 --origin world >/dev/null
+check "poli001 warns once" bash -c \
+  "'$MM' info '$DATA/ua_mapas_metricos_pcd/poli001.pcd' 2>&1 >/dev/null | grep -c 'skipped 6 malformed' | grep -qx 1"
+finish

@@ -1,0 +1,29 @@
+#include <iostream>
+
+#include <metricmap/metricmap.h>
+
+int main(int argc, char** argv) {
+  if (argc != 2) return 2;
+  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  metricmap::loadCloud(argv[1], *cloud);
+
+  metricmap::OccupancyGrid<pcl::PointXYZ> grid;
+  grid.setCellSize(1.0f);
+  grid.setInputCloud(cloud);
+  pcl::PointCloud<pcl::PointXYZ> cells;
+  grid.filter(cells);
+
+  metricmap::AdaptiveOctree<pcl::PointXYZ> octree;
+  octree.setMaxPointsPerLeaf(100);
+  octree.setMinCellSize(1.0f);
+  octree.setInputCloud(cloud);
+  pcl::PointCloud<pcl::PointXYZ> leaves;
+  octree.filter(leaves);
+
+  std::cout << "metricmap " << METRICMAP_VERSION << ": " << cloud->size() << " points, "
+            << grid.getStatistics().occupied_cells << " occupied cells, "
+            << octree.getStatistics().occupied_leaves << " occupied leaves\n";
+  const bool ok = cells.size() == grid.getStatistics().occupied_cells &&
+                  leaves.size() == octree.getStatistics().occupied_leaves;
+  return ok ? 0 : 1;
+}

@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Install metricmap into a scratch prefix, build the consumer project against it, run it.
+set -euo pipefail
+build_dir=$1 source_dir=$2 data=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cmake --install "$build_dir" --prefix "$work/prefix" >/dev/null
+test -f "$work/prefix/include/metricmap/metricmap.h"
+cmake -S "$source_dir" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" \
+      -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$work/build" -j 2 >/dev/null
+out=$("$work/build/consumer" "$data")
+echo "$out"
+echo "$out" | grep -q "79149 points, 338 occupied cells, 1212 occupied leaves"
