@@ -224,9 +224,28 @@ TEST(CloudReader, BadInputsGiveOneLineErrors) {
   const std::size_t body = milk.find("DATA binary_compressed\n") + 23;
   std::string corrupt = milk;
   for (std::size_t i = body + 8 + 100; i < body + 8 + 4000 && i < corrupt.size(); ++i) corrupt[i] = '\xff';
-  expectInputError(tmp.write("corrupt.pcd", corrupt), "could not read");
+  expectInputError(tmp.write("corrupt.pcd", corrupt), "could not decode");
   expectInputError(tmp.write("cut.pcd", milk.substr(0, milk.size() / 2)),
                    "truncated binary_compressed body");
+}
+
+}  // namespace metricmap
+
+namespace metricmap {
+
+// Inputs the fuzzer found (scripts/fuzz): each must load or raise InputError, nothing else.
+TEST(CloudReader, FuzzRegressions) {
+  const fs::path dir = fs::path(METRICMAP_SOURCE_DIR) / "tests" / "fuzz_regressions";
+  std::size_t files = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    Cloud cloud;
+    try {
+      loadCloud(entry.path().string(), cloud);
+    } catch (const InputError&) {
+    }
+    ++files;
+  }
+  EXPECT_GT(files, 0u);
 }
 
 }  // namespace metricmap

@@ -5,16 +5,14 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/conversions.h>
-#include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
 
 #include "metricmap/exceptions.h"
 #include "metricmap/io/kitti_bin.h"
-#include "metricmap/io/pcd_header.h"
+#include "metricmap/io/pcd_reader.h"
 #include "metricmap/io/ply_check.h"
 
 namespace metricmap {
@@ -28,33 +26,6 @@ std::string lowerExtension(const std::string& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext;
-}
-
-void readPcd(const std::string& path, pcl::PCLPointCloud2& blob, LoadReport& report) {
-  const PcdHeader h = checkPcdFile(path, report.skipped_lines);
-  report.format = "pcd " + h.data;
-  pcl::PCDReader reader;
-  int rc = -1;
-  if (h.data == "ascii") {
-    Eigen::Vector4f origin;
-    Eigen::Quaternionf orientation;
-    int version = 0, data_type = 0;
-    unsigned int data_idx = 0;
-    rc = reader.readHeader(path, blob, origin, orientation, version, data_type, data_idx);
-    std::istringstream body(h.ascii_body);
-    if (rc >= 0) rc = reader.readBodyASCII(body, blob, version);
-  } else {
-    rc = reader.read(path, blob);
-  }
-  if (rc < 0) throw InputError(path + ": pcl::io could not read this PCD file");
-  if (static_cast<std::uint64_t>(blob.width) * blob.height != h.points) {
-    throw InputError(path + ": read " + std::to_string(blob.width * blob.height) +
-                     " points, header says " + std::to_string(h.points));
-  }
-  if (report.skipped_lines > 0) {
-    report.warnings.push_back(path + ": skipped " + std::to_string(report.skipped_lines) +
-                              " malformed line(s) in the ascii body");
-  }
 }
 
 void readPly(const std::string& path, pcl::PCLPointCloud2& blob, LoadReport& report) {

@@ -1,0 +1,46 @@
+// libFuzzer target for the loading path: any bytes, as .pcd/.ply/.bin, must either load or
+// raise InputError, never crash, hang or allocate without bound; what loads is then binned.
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+#include <pcl/console/print.h>
+
+#include "metricmap/exceptions.h"
+#include "metricmap/grid/occupancy_grid.h"
+#include "metricmap/io/cloud_reader.h"
+#include "metricmap/octree/adaptive_octree.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static const bool quiet = [] {
+    pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+    return true;
+  }();
+  (void)quiet;
+  const std::string bytes(reinterpret_cast<const char*>(data), size);
+  const char* ext = bytes.rfind("ply", 0) == 0                  ? ".ply"
+                    : bytes.find("DATA") != std::string::npos ? ".pcd"
+                                                                : ".bin";
+  const std::string path = "/tmp/metricmap_fuzz_" + std::to_string(::getpid()) + ext;
+  std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(size));
+  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  try {
+    metricmap::loadCloud(path, *cloud);
+    metricmap::OccupancyGrid<pcl::PointXYZ> grid;
+    grid.setCellSize(0.5f);
+    grid.setInputCloud(cloud);
+    grid.compute();
+    metricmap::AdaptiveOctree<pcl::PointXYZ> octree;
+    octree.setMaxPointsPerLeaf(4);
+    octree.setMinCellSize(0.01f);
+    octree.setInputCloud(cloud);
+    octree.compute();
+  } catch (const metricmap::InputError&) {
+  } catch (const metricmap::CapacityError&) {
+  }
+  std::remove(path.c_str());
+  return 0;
+}
