@@ -6,6 +6,10 @@ function(metricmap_set_warnings target)
     target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer
                                              -fno-sanitize-recover=undefined)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+    # Eigen switches to its own offset-based aligned malloc under ASan; the prebuilt PCL
+    # libraries use glibc's (already 16-byte aligned) malloc, so memory allocated in one and
+    # freed in the other trips ASan (PCL issue #5457 shows the same stack). Keep them in step.
+    target_compile_definitions(${target} PRIVATE EIGEN_MALLOC_ALREADY_ALIGNED=1)
   endif()
   if(METRICMAP_NATIVE)
     target_compile_options(${target} PRIVATE -march=native)
