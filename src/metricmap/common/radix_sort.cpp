@@ -1,25 +1,83 @@
 #include "metricmap/common/radix_sort.h"
 
-#include <array>
+#include <algorithm>
 #include <cstddef>
 
 namespace metricmap {
+namespace {
+
+struct Plan {
+  int passes = 0;
+  int digit_bits = 0;
+};
+
+Plan plan(int key_bits) {
+  Plan p;
+  if (key_bits <= 0) return p;
+  p.passes = (key_bits + 9) / 10;  // 10-bit digits measured fastest here (docs/BENCHMARKS.md)
+  p.digit_bits = (key_bits + p.passes - 1) / p.passes;
+  return p;
+}
+
+}  // namespace
+
+int bitsFor(std::uint64_t n) {
+  int bits = 1;
+  while (bits < 64 && (std::uint64_t{1} << bits) < n) ++bits;
+  return bits;
+}
+
+void radixSortWords(std::vector<std::uint64_t>& words, std::vector<std::uint64_t>& scratch,
+                    int low_bit, int key_bits) {
+  const std::size_t n = words.size();
+  const Plan p = plan(key_bits);
+  if (n < 2 || p.passes == 0) return;
+  const std::size_t buckets = std::size_t{1} << p.digit_bits;
+  const std::uint64_t mask = buckets - 1;
+  // All histograms in one read pass.
+  std::vector<std::size_t> hist(buckets * static_cast<std::size_t>(p.passes), 0);
+  for (const std::uint64_t w : words) {
+    for (int k = 0; k < p.passes; ++k) ++hist[k * buckets + ((w >> (low_bit + k * p.digit_bits)) & mask)];
+  }
+  scratch.resize(n);
+  for (int k = 0; k < p.passes; ++k) {
+    std::size_t* h = &hist[k * buckets];
+    if (std::any_of(h, h + buckets, [n](std::size_t c) { return c == n; })) continue;
+    std::size_t sum = 0;
+    for (std::size_t b = 0; b < buckets; ++b) {
+      const std::size_t c = h[b];
+      h[b] = sum;
+      sum += c;
+    }
+    const int shift = low_bit + k * p.digit_bits;
+    for (const std::uint64_t w : words) scratch[h[(w >> shift) & mask]++] = w;
+    words.swap(scratch);
+  }
+}
 
 void radixSortPairs(std::vector<std::uint64_t>& keys, std::vector<std::uint32_t>& values,
                     int key_bits) {
   const std::size_t n = keys.size();
-  if (n < 2) return;
+  const Plan p = plan(key_bits);
+  if (n < 2 || p.passes == 0) return;
+  const std::size_t buckets = std::size_t{1} << p.digit_bits;
+  const std::uint64_t mask = buckets - 1;
   std::vector<std::uint64_t> keys_tmp(n);
   std::vector<std::uint32_t> values_tmp(n);
-  for (int shift = 0; shift < key_bits; shift += 8) {
-    std::array<std::size_t, 257> offset{};
-    for (std::size_t i = 0; i < n; ++i) ++offset[((keys[i] >> shift) & 0xFF) + 1];
-    bool single_bucket = false;
-    for (int d = 1; d <= 256; ++d) single_bucket = single_bucket || offset[d] == n;
-    if (single_bucket) continue;
-    for (int d = 1; d <= 256; ++d) offset[d] += offset[d - 1];
+  std::vector<std::size_t> h(buckets);
+  for (int k = 0; k < p.passes; ++k) {
+    const int shift = k * p.digit_bits;
+    std::fill(h.begin(), h.end(), 0);
+    for (const std::uint64_t key : keys) ++h[(key >> shift) & mask];
+    if (std::any_of(h.begin(), h.end(), [n](std::size_t c) { return c == n; })) continue;
+    std::size_t sum = 0;
+    for (std::size_t& c : h) {
+      const std::size_t count = c;
+      c = sum;
+      sum += count;
+    }
     for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t pos = offset[(keys[i] >> shift) & 0xFF]++;
+      const std::size_t pos = h[(keys[i] >> shift) & mask]++;
       keys_tmp[pos] = keys[i];
       values_tmp[pos] = values[i];
     }

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "metricmap/common/bounds.h"
-#include "metricmap/common/cell_table.h"
+#include "metricmap/common/fast_floor.h"
 #include "metricmap/exceptions.h"
 
 namespace metricmap {
@@ -27,11 +27,14 @@ inline double snappedFloor(double p, double mn, double cell) {
   return f;
 }
 
-struct Accumulator {
-  double sx = 0.0, sy = 0.0, sz = 0.0;
-  std::uint64_t count = 0;
-  std::size_t first = 0;
-};
+/// The same for a point known to be inside the checked bounds (no libm call).
+inline std::uint64_t snappedIndex(double p, double mn, double cell) {
+  const double t = (p - mn) / cell;
+  std::int64_t f = floorToInt(t);
+  const double tol = ((std::fabs(p) + std::fabs(mn)) / cell + t) * kFloatSnap;
+  f += static_cast<std::int64_t>(static_cast<double>(f) + 1.0 - t <= tol);
+  return static_cast<std::uint64_t>(f);
+}
 
 std::string tooLarge(const GridLayout& layout, float cell) {
   std::ostringstream os;
@@ -95,11 +98,21 @@ void validateCellSize(float cell_size) {
 }
 
 GridResult buildGrid(const PointSpan& points, const GridParams& params) {
-  validateCellSize(params.cell_size);
+  GridWorkspace workspace;
   GridResult result;
+  buildGrid(points, params, workspace, result);
+  return result;
+}
+
+void buildGrid(const PointSpan& points, const GridParams& params, GridWorkspace& workspace,
+               GridResult& result) {
+  validateCellSize(params.cell_size);
+  result.layout = GridLayout();
+  result.cells.clear();
+  result.stats = GridStatistics();
   const Bounds bounds = computeBounds(points);
   result.stats.skipped_points = points.size - bounds.finite;
-  if (bounds.finite == 0) return result;
+  if (bounds.finite == 0) return;
 
   result.layout = makeLayout(bounds, params);
   const GridLayout& L = result.layout;
@@ -110,49 +123,45 @@ GridResult buildGrid(const PointSpan& points, const GridParams& params) {
   const float inv = 1.0f / params.cell_size;
   const bool cloud_min = params.origin == GridOrigin::CloudMinimum;
   const double mn[3] = {bounds.min[0], bounds.min[1], bounds.min[2]};
+  if (points.size > 0xFFFFFFFFull) throw CapacityError("grid: more than 2^32 points");
 
-  CellTable table(std::min<std::size_t>(bounds.finite, 1u << 16));
-  std::vector<Accumulator> acc;
-  std::uint64_t last_key = CellTable::kEmpty;
-  std::size_t last_id = 0;
+  // Linear cell key of every finite point, then a radix sort: equal keys become runs.
+  KeySorter& sorter = workspace.sorter;
+  sorter.reset(points.size, bitsFor(result.stats.total_cells));
   for (std::size_t i = 0; i < points.size; ++i) {
     const float* p = points.at(i);
     if (!isFinitePoint(p)) continue;
     std::uint64_t k[3];
     for (int a = 0; a < 3; ++a) {
-      k[a] = cloud_min ? static_cast<std::uint64_t>(snappedFloor(p[a], mn[a], cell))
-                       : static_cast<std::uint64_t>(
-                             static_cast<std::int64_t>(std::floor(p[a] * inv)) - L.min_index[a]);
+      k[a] = cloud_min ? snappedIndex(p[a], mn[a], cell)
+                       : static_cast<std::uint64_t>(floorToInt(p[a] * inv) - L.min_index[a]);
     }
-    const std::uint64_t key = k[0] + nx * k[1] + nxy * k[2];
-    if (key != last_key) {
-      last_key = key;
-      last_id = table.findOrInsert(key, acc.size());
-      if (last_id == acc.size()) {
-        acc.emplace_back();
-        acc.back().first = points.sourceIndex(i);
-      }
-    }
-    Accumulator& a = acc[last_id];
-    a.sx += p[0];
-    a.sy += p[1];
-    a.sz += p[2];
-    ++a.count;
+    sorter.push(k[0] + nx * k[1] + nxy * k[2], static_cast<std::uint32_t>(i));
   }
+  sorter.sort();
 
-  std::vector<std::pair<std::uint64_t, std::size_t>> order = table.entries();
-  std::sort(order.begin(), order.end());
-  result.cells.reserve(order.size());
-  for (const auto& [key, id] : order) {
-    const Accumulator& a = acc[id];
+  constexpr std::size_t kAhead = 16;
+  const std::size_t n = sorter.size();
+  for (std::size_t begin = 0; begin < n;) {
+    const std::uint64_t key = sorter.key(begin);
+    double sx = 0.0, sy = 0.0, sz = 0.0;
+    std::size_t end = begin;
+    for (; end < n && sorter.key(end) == key; ++end) {
+      if (end + kAhead < n) __builtin_prefetch(points.at(sorter.position(end + kAhead)));
+      const float* p = points.at(sorter.position(end));
+      sx += p[0];
+      sy += p[1];
+      sz += p[2];
+    }
     GridCell c;
     c.index = {L.min_index[0] + static_cast<std::int64_t>(key % nx),
                L.min_index[1] + static_cast<std::int64_t>((key / nx) % L.dims[1]),
                L.min_index[2] + static_cast<std::int64_t>(key / nxy)};
-    c.count = a.count;
-    c.mean = Eigen::Vector3d(a.sx, a.sy, a.sz) / static_cast<double>(a.count);
-    c.first_point = a.first;
+    c.count = end - begin;
+    c.mean = Eigen::Vector3d(sx, sy, sz) / static_cast<double>(c.count);
+    c.first_point = points.sourceIndex(sorter.position(begin));
     result.cells.push_back(c);
+    begin = end;
   }
   GridStatistics& s = result.stats;
   s.points = bounds.finite;
@@ -160,7 +169,6 @@ GridResult buildGrid(const PointSpan& points, const GridParams& params) {
   s.empty_cells = s.total_cells - s.occupied_cells;
   s.mean_points_per_occupied_cell =
       static_cast<double>(s.points) / static_cast<double>(s.occupied_cells);
-  return result;
 }
 
 }  // namespace metricmap

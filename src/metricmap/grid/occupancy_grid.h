@@ -25,6 +25,9 @@ namespace metricmap {
 /// bit for bit the partition of pcl::VoxelGrid, without its 32-bit index limit.
 /// Cell keys are 64-bit: any grid whose total cell count fits in 64 bits works.
 ///
+/// The build keys every point by its linear cell index (x fastest) and radix-sorts the keys, so
+/// cells come out in that order (pcl::VoxelGrid's order too). Scratch buffers are kept between
+/// calls: reuse one instance for a stream of clouds.
 /// \note Thread safety: one instance per thread; different instances share nothing.
 template <typename PointT>
 class OccupancyGrid : public pcl::Filter<PointT> {
@@ -73,6 +76,7 @@ class OccupancyGrid : public pcl::Filter<PointT> {
 
  private:
   GridParams params_;
+  GridWorkspace workspace_;  // scratch kept between builds
   GridResult result_;
 };
 

@@ -76,6 +76,7 @@ class AdaptiveOctree : public pcl::Filter<PointT> {
 
  private:
   OctreeParams params_;
+  OctreeWorkspace workspace_;  // scratch kept between builds
   OctreeResult result_;
 };
 

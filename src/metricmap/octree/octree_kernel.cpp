@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "metricmap/common/bounds.h"
-#include "metricmap/common/radix_sort.h"
+#include "metricmap/common/fast_floor.h"
 #include "metricmap/exceptions.h"
 
 namespace metricmap {
@@ -35,6 +35,7 @@ struct Frame {
   unsigned levels;  // depth of the Morton keys: no node at this depth or deeper can split
   unsigned table_levels;
   std::vector<double> breaks[3];  // 2^table_levels + 1 boundaries per axis
+  double scale[3];                // 2^table_levels / extent (0 for a flat axis)
 
   void buildTables() {
     table_levels = std::min(levels, kTableLevels);
@@ -42,6 +43,7 @@ struct Frame {
     for (int a = 0; a < 3; ++a) {
       std::vector<double>& b = breaks[a];
       b.assign(n + 1, 0.0);
+      scale[a] = max[a] > min[a] ? static_cast<double>(n) / (max[a] - min[a]) : 0.0;
       b[0] = min[a];
       b[n] = max[a];
       for (std::size_t step = n; step > 1; step /= 2) {
@@ -57,8 +59,8 @@ struct Frame {
     const std::size_t top = b.size() - 2;
     std::size_t j = top;
     if (max[a] > min[a]) {
-      const double t = std::floor((p - min[a]) / (max[a] - min[a]) * static_cast<double>(top + 1));
-      j = t <= 0.0 ? 0 : std::min<std::size_t>(top, static_cast<std::size_t>(t));
+      const std::int64_t t = floorToInt((p - min[a]) * scale[a]);
+      j = t <= 0 ? 0 : std::min<std::size_t>(top, static_cast<std::size_t>(t));
       while (j < top && b[j + 1] <= p) ++j;
       while (j > 0 && b[j] > p) --j;
     }
@@ -85,14 +87,14 @@ Frame makeFrame(const Bounds& b, const OctreeParams& params) {
   if (params.cubic_root) {
     for (int a = 0; a < 3; ++a) f.max[a] = f.min[a] + max_ext;
   }
-  // Node edges are halved with rounding, so allow one level more than max_ext / 2^d suggests;
-  // the split test itself looks at each node's own edges.
+  // Key depth: the first level whose nodes cannot split. Halving rounds, so a node's edge at
+  // depth d is max_ext / 2^d within a relative 2^-40; the margin keeps every node that may
+  // split above this level. The split test itself looks at each node's own edges.
+  const double limit = static_cast<double>(params.min_cell_size) * (1.0 - 1e-9);
   f.levels = 0;
-  while (f.levels < kOctreeMaxDepth &&
-         std::ldexp(max_ext, -static_cast<int>(f.levels)) > params.min_cell_size) {
+  while (f.levels < kOctreeMaxDepth && std::ldexp(max_ext, -static_cast<int>(f.levels)) > limit) {
     ++f.levels;
   }
-  if (max_ext > 0.0) f.levels = std::min(kOctreeMaxDepth, f.levels + 1);
   f.buildTables();
   return f;
 }
@@ -120,27 +122,40 @@ void validateOctreeParams(const OctreeParams& params) {
 }
 
 OctreeResult buildOctree(const PointSpan& points, const OctreeParams& params) {
+  OctreeWorkspace workspace;
+  OctreeResult result;
+  buildOctree(points, params, workspace, result);
+  return result;
+}
+
+void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWorkspace& workspace,
+                 OctreeResult& r) {
   validateOctreeParams(params);
-  OctreeResult r;
+  r.nodes.clear();
+  r.point_order.clear();
+  r.occupied_leaves.clear();
+  r.stats = OctreeStatistics();
   const Bounds bounds = computeBounds(points);
   const Frame frame = makeFrame(bounds, params);
+  if (points.size > 0xFFFFFFFFull) throw CapacityError("octree: more than 2^32 points");
 
-  // Morton keys of the points inside the root, leaf level `frame.levels`.
-  std::vector<std::uint64_t> keys;
-  keys.reserve(bounds.finite);
-  r.point_order.reserve(bounds.finite);
-  if (bounds.finite > 0xFFFFFFFFull) throw CapacityError("octree: more than 2^32 points");
+  // Morton keys of the points inside the root at leaf level `frame.levels`, radix-sorted.
+  KeySorter& sorter = workspace.sorter;
+  sorter.reset(points.size, 3 * static_cast<int>(frame.levels));
   for (std::size_t i = 0; i < points.size; ++i) {
     const float* p = points.at(i);
     if (!isFinitePoint(p) || (params.has_root_box && !insideRoot(p, frame))) continue;
-    keys.push_back(spreadBits(frame.quantize(0, p[0])) |
-                   spreadBits(frame.quantize(1, p[1])) << 1 |
-                   spreadBits(frame.quantize(2, p[2])) << 2);
-    r.point_order.push_back(static_cast<std::uint32_t>(points.sourceIndex(i)));
+    sorter.push(spreadBits(frame.quantize(0, p[0])) | spreadBits(frame.quantize(1, p[1])) << 1 |
+                    spreadBits(frame.quantize(2, p[2])) << 2,
+                static_cast<std::uint32_t>(i));
   }
-  radixSortPairs(keys, r.point_order, 3 * static_cast<int>(frame.levels));
-  r.stats.skipped_points = points.size - keys.size();
-  const std::size_t n = keys.size();
+  sorter.sort();
+  const std::size_t n = sorter.size();
+  r.stats.skipped_points = points.size - n;
+  r.point_order.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    r.point_order[k] = static_cast<std::uint32_t>(points.sourceIndex(sorter.position(k)));
+  }
 
   // Top-down build over the sorted keys; children of a node are 8 consecutive ranges.
   OctreeNode root;
@@ -148,27 +163,40 @@ OctreeResult buildOctree(const PointSpan& points, const OctreeParams& params) {
   root.max = Eigen::Vector3d(frame.max[0], frame.max[1], frame.max[2]);
   root.count = n;
   r.nodes.push_back(root);
-  std::vector<std::size_t> stack{0};
+  std::vector<std::size_t>& stack = workspace.stack;
+  stack.assign(1, 0);
   while (!stack.empty()) {
     const std::size_t id = stack.back();
     stack.pop_back();
     const OctreeNode node = r.nodes[id];
     const bool split = node.count > params.max_points_per_leaf && node.depth < frame.levels &&
                        (node.max - node.min).maxCoeff() > params.min_cell_size;
-    if (!split) continue;
+    if (!split) {
+      // Popped in depth-first order (children are pushed 7..0), so leaves come in Morton order.
+      if (node.count > 0) r.occupied_leaves.push_back(id);
+      continue;
+    }
     const unsigned shift = 3 * (frame.levels - 1 - node.depth);
     const std::size_t first_child = r.nodes.size();
     r.nodes[id].first_child = first_child;
-    auto begin = keys.begin() + static_cast<std::ptrdiff_t>(node.first_point);
-    const auto end = begin + static_cast<std::ptrdiff_t>(node.count);
+    std::size_t begin = node.first_point;
+    const std::size_t end = begin + node.count;
     for (unsigned c = 0; c < 8; ++c) {
-      const auto stop = std::partition_point(
-          begin, end, [&](std::uint64_t k) { return ((k >> shift) & 7u) <= c; });
+      // First position in [begin, end) whose octant digit exceeds c (keys are sorted).
+      std::size_t lo = begin, hi = end;
+      while (lo < hi) {
+        const std::size_t mid = lo + (hi - lo) / 2;
+        if (((sorter.key(mid) >> shift) & 7u) <= c) {
+          lo = mid + 1;
+        } else {
+          hi = mid;
+        }
+      }
       OctreeNode child;
       child.depth = node.depth + 1;
       child.parent = id;
-      child.first_point = static_cast<std::size_t>(begin - keys.begin());
-      child.count = static_cast<std::uint64_t>(stop - begin);
+      child.first_point = begin;
+      child.count = lo - begin;
       for (int a = 0; a < 3; ++a) {
         const double mid = (node.min[a] + node.max[a]) / 2;
         const bool upper = (c >> a) & 1u;
@@ -176,14 +204,16 @@ OctreeResult buildOctree(const PointSpan& points, const OctreeParams& params) {
         child.max[a] = upper ? node.max[a] : mid;
       }
       r.nodes.push_back(child);
-      begin = stop;
+      begin = lo;
     }
     for (unsigned c = 8; c-- > 0;) stack.push_back(first_child + c);
   }
 
   // Sums: leaves from their points, then children into parents (children come after parents).
-  std::vector<Eigen::Vector3d> sums(r.nodes.size(), Eigen::Vector3d::Zero());
+  std::vector<Eigen::Vector3d>& sums = workspace.sums;
+  sums.assign(r.nodes.size(), Eigen::Vector3d::Zero());
   OctreeStatistics& s = r.stats;
+  constexpr std::size_t kAhead = 16;
   for (std::size_t id = 0; id < r.nodes.size(); ++id) {
     const OctreeNode& node = r.nodes[id];
     s.max_depth = std::max(s.max_depth, node.depth);
@@ -198,27 +228,26 @@ OctreeResult buildOctree(const PointSpan& points, const OctreeParams& params) {
     }
     ++s.occupied_leaves;
     s.points += node.count;
-    r.occupied_leaves.push_back(id);
-    for (std::size_t k = node.first_point; k < node.first_point + node.count; ++k) {
-      const float* p = reinterpret_cast<const float*>(reinterpret_cast<const char*>(points.base) +
-                                         r.point_order[k] * points.stride);
-      sums[id] += Eigen::Vector3d(p[0], p[1], p[2]);
+    double sx = 0.0, sy = 0.0, sz = 0.0;
+    const std::size_t end = node.first_point + node.count;
+    for (std::size_t k = node.first_point; k < end; ++k) {
+      if (k + kAhead < end) __builtin_prefetch(points.at(sorter.position(k + kAhead)));
+      const float* p = points.at(sorter.position(k));
+      sx += p[0];
+      sy += p[1];
+      sz += p[2];
     }
+    sums[id] = Eigen::Vector3d(sx, sy, sz);
   }
   for (std::size_t id = r.nodes.size(); id-- > 1;) sums[r.nodes[id].parent] += sums[id];
   for (std::size_t id = 0; id < r.nodes.size(); ++id) {
     if (r.nodes[id].count > 0) r.nodes[id].mean = sums[id] / static_cast<double>(r.nodes[id].count);
   }
-  std::sort(r.occupied_leaves.begin(), r.occupied_leaves.end(),
-            [&](std::size_t a, std::size_t b) {
-              return r.nodes[a].first_point < r.nodes[b].first_point;
-            });
   s.total_nodes = r.nodes.size();
   if (s.occupied_leaves > 0) {
     s.mean_points_per_occupied_leaf =
         static_cast<double>(s.points) / static_cast<double>(s.occupied_leaves);
   }
-  return r;
 }
 
 }  // namespace metricmap

@@ -2,10 +2,20 @@
 /// \file octree_kernel.h
 /// \brief The non-template core of AdaptiveOctree: a Morton-sorted build over a float array.
 
+#include <vector>
+
+#include "metricmap/common/key_sorter.h"
 #include "metricmap/common/point_span.h"
 #include "metricmap/octree/octree_types.h"
 
 namespace metricmap {
+
+/// \brief Scratch memory of an octree build, kept between builds.
+struct OctreeWorkspace {
+  KeySorter sorter;
+  std::vector<std::size_t> stack;
+  std::vector<Eigen::Vector3d> sums;
+};
 
 /// \brief Throws std::invalid_argument unless min_cell_size is finite and >= 0, and a root
 /// box (if any) is finite with max >= min.
@@ -14,7 +24,12 @@ void validateOctreeParams(const OctreeParams& params);
 /// \brief Build the adaptive octree of the finite points of `points`.
 /// A node splits into 8 equal children iff it holds more than max_points_per_leaf points, its
 /// largest edge is longer than min_cell_size and its depth is below kOctreeMaxDepth.
-/// \note Thread-safe: no shared state.
+/// `result` is overwritten (its vectors keep their capacity).
+/// \note Thread-safe as long as each thread uses its own workspace and result.
+void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWorkspace& workspace,
+                 OctreeResult& result);
+
+/// \brief Convenience form with a temporary workspace.
 OctreeResult buildOctree(const PointSpan& points, const OctreeParams& params);
 
 }  // namespace metricmap

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <tuple>
+#include <type_traits>
+
+#include <pcl/point_types.h>
 #include <stdexcept>
 
 #include "metricmap/common/point_span_pcl.h"
@@ -13,7 +16,7 @@ template <typename PointT>
 void OccupancyGrid<PointT>::compute() {
   if (!input_) throw std::invalid_argument("OccupancyGrid: no input cloud set");
   const pcl::Indices* idx = (fake_indices_ || !indices_) ? nullptr : indices_.get();
-  result_ = buildGrid(makePointSpan(*input_, idx), params_);
+  buildGrid(makePointSpan(*input_, idx), params_, workspace_, result_);
 }
 
 template <typename PointT>
@@ -37,14 +40,14 @@ Eigen::Vector3d OccupancyGrid<PointT>::getCellMin(const std::array<std::int64_t,
 template <typename PointT>
 void OccupancyGrid<PointT>::applyFilter(PointCloud& output) {
   compute();
-  output.clear();
-  output.reserve(result_.cells.size());
-  for (const GridCell& c : result_.cells) {
-    PointT p = (*input_)[c.first_point];
-    p.x = static_cast<float>(c.mean.x());
-    p.y = static_cast<float>(c.mean.y());
-    p.z = static_cast<float>(c.mean.z());
-    output.push_back(p);
+  const std::vector<GridCell>& cells = result_.cells;
+  output.resize(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    PointT& p = output[i];
+    if constexpr (!std::is_same_v<PointT, pcl::PointXYZ>) p = (*input_)[cells[i].first_point];
+    p.x = static_cast<float>(cells[i].mean.x());
+    p.y = static_cast<float>(cells[i].mean.y());
+    p.z = static_cast<float>(cells[i].mean.z());
   }
   output.width = static_cast<std::uint32_t>(output.size());
   output.height = 1;

@@ -1,6 +1,9 @@
 #pragma once
 
 #include <stdexcept>
+#include <type_traits>
+
+#include <pcl/point_types.h>
 
 #include "metricmap/common/point_span_pcl.h"
 #include "metricmap/octree/adaptive_octree.h"
@@ -29,7 +32,7 @@ template <typename PointT>
 void AdaptiveOctree<PointT>::compute() {
   if (!input_) throw std::invalid_argument("AdaptiveOctree: no input cloud set");
   const pcl::Indices* idx = (fake_indices_ || !indices_) ? nullptr : indices_.get();
-  result_ = buildOctree(makePointSpan(*input_, idx), params_);
+  buildOctree(makePointSpan(*input_, idx), params_, workspace_, result_);
 }
 
 template <typename PointT>
@@ -42,15 +45,17 @@ std::vector<int> AdaptiveOctree<PointT>::getPointIndices(std::size_t node_id) co
 template <typename PointT>
 void AdaptiveOctree<PointT>::applyFilter(PointCloud& output) {
   compute();
-  output.clear();
-  output.reserve(result_.occupied_leaves.size());
-  for (std::size_t id : result_.occupied_leaves) {
-    const OctreeNode& n = result_.nodes[id];
-    PointT p = (*input_)[result_.point_order[n.first_point]];
+  const std::vector<std::size_t>& leaves = result_.occupied_leaves;
+  output.resize(leaves.size());
+  for (std::size_t i = 0; i < leaves.size(); ++i) {
+    const OctreeNode& n = result_.nodes[leaves[i]];
+    PointT& p = output[i];
+    if constexpr (!std::is_same_v<PointT, pcl::PointXYZ>) {
+      p = (*input_)[result_.point_order[n.first_point]];
+    }
     p.x = static_cast<float>(n.mean.x());
     p.y = static_cast<float>(n.mean.y());
     p.z = static_cast<float>(n.mean.z());
-    output.push_back(p);
   }
   output.width = static_cast<std::uint32_t>(output.size());
   output.height = 1;
