@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
+#include <CLI/CLI.hpp>
 
 #include "metricmap/io/load_report.h"
 

@@ -70,7 +70,8 @@ nlohmann::json toJson(const Record& r, bool with_pcl) {
       {"octree", r.octree},
       {"seconds", {{"load", r.load_s}, {"grid", r.grid_s}, {"octree", r.octree_s}}}};
   if (with_pcl) {
-    j["pcl_octree"] = {{"leaves", r.pcl.leaves}, {"depth", r.pcl.depth}, {"seconds", r.pcl.seconds}};
+    j["pcl_octree"] = {
+        {"leaves", r.pcl.leaves}, {"depth", r.pcl.depth}, {"seconds", r.pcl.seconds}};
   }
   return j;
 }
@@ -81,40 +82,39 @@ std::string render(const std::vector<Record>& records, const CompareOptions& o) 
     for (const Record& r : records) a.push_back(toJson(r, o.pcl_octree));
     return a.dump(2) + "\n";
   }
-  std::vector<std::string> header = {
-      "file", "cell_size", "min_cell_size", "max_points", "grid_total", "grid_occupied",
-      "grid_empty", "grid_mean", "octree_nodes", "octree_leaves", "octree_internal",
-      "octree_occupied", "octree_empty", "octree_mean", "octree_depth"};
+  std::vector<std::string> header = {"file",          "cell_size",       "min_cell_size",
+                                     "max_points",    "grid_total",      "grid_occupied",
+                                     "grid_empty",    "grid_mean",       "octree_nodes",
+                                     "octree_leaves", "octree_internal", "octree_occupied",
+                                     "octree_empty",  "octree_mean",     "octree_depth"};
   if (o.pcl_octree) {
     header.insert(header.end(), {"pcl_leaves", "pcl_depth"});
   }
   Table t(header);
   const bool csv = o.format == "csv";
   for (const Record& r : records) {
-    std::vector<std::string> row = {
-        r.file,
-        fixed(r.config.cell_size, csv ? 6 : 2),
-        fixed(r.config.min_cell_size, csv ? 6 : 2),
-        std::to_string(r.config.max_points),
-        std::to_string(r.grid.total_cells),
-        std::to_string(r.grid.occupied_cells),
-        std::to_string(r.grid.empty_cells),
-        fixed(r.grid.mean_points_per_occupied_cell, csv ? 6 : 2),
-        std::to_string(r.octree.total_nodes),
-        std::to_string(r.octree.leaf_nodes),
-        std::to_string(r.octree.internal_nodes),
-        std::to_string(r.octree.occupied_leaves),
-        std::to_string(r.octree.empty_leaves),
-        fixed(r.octree.mean_points_per_occupied_leaf, csv ? 6 : 2),
-        std::to_string(r.octree.max_depth)};
+    std::vector<std::string> row = {r.file,
+                                    fixed(r.config.cell_size, csv ? 6 : 2),
+                                    fixed(r.config.min_cell_size, csv ? 6 : 2),
+                                    std::to_string(r.config.max_points),
+                                    std::to_string(r.grid.total_cells),
+                                    std::to_string(r.grid.occupied_cells),
+                                    std::to_string(r.grid.empty_cells),
+                                    fixed(r.grid.mean_points_per_occupied_cell, csv ? 6 : 2),
+                                    std::to_string(r.octree.total_nodes),
+                                    std::to_string(r.octree.leaf_nodes),
+                                    std::to_string(r.octree.internal_nodes),
+                                    std::to_string(r.octree.occupied_leaves),
+                                    std::to_string(r.octree.empty_leaves),
+                                    fixed(r.octree.mean_points_per_occupied_leaf, csv ? 6 : 2),
+                                    std::to_string(r.octree.max_depth)};
     if (o.pcl_octree) {
       row.insert(row.end(), {std::to_string(r.pcl.leaves), std::to_string(r.pcl.depth)});
     }
     t.addRow(row);
   }
-  const TableStyle style = csv ? TableStyle::Csv
-                               : (o.format == "markdown" ? TableStyle::Markdown
-                                                         : TableStyle::Aligned);
+  const TableStyle style =
+      csv ? TableStyle::Csv : (o.format == "markdown" ? TableStyle::Markdown : TableStyle::Aligned);
   return t.render(style);
 }
 

@@ -61,8 +61,8 @@ void runGrid(const GridOptions& o) {
     emit(j.dump(2) + "\n", "");
     return;
   }
-  Table t({"file", "cell_size", "origin", "points", "total_cells", "occupied_cells",
-           "empty_cells", "mean_points_per_occupied_cell"});
+  Table t({"file", "cell_size", "origin", "points", "total_cells", "occupied_cells", "empty_cells",
+           "mean_points_per_occupied_cell"});
   t.addRow({o.file, fixed(o.cell_size, 3), o.origin, std::to_string(s.points),
             std::to_string(s.total_cells), std::to_string(s.occupied_cells),
             std::to_string(s.empty_cells), fixed(s.mean_points_per_occupied_cell, 2)});

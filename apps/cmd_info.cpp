@@ -2,8 +2,8 @@
 #include <memory>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
 #include <pcl/common/common.h>
+#include <nlohmann/json.hpp>
 
 #include "cli_common.h"
 #include "commands.h"

@@ -30,8 +30,8 @@ std::string leavesCsv(const std::vector<OctreeNode>& nodes) {
     const OctreeNode& n = nodes[id];
     if (!n.isLeaf()) continue;
     os << id << "," << n.depth << "," << n.min.x() << "," << n.min.y() << "," << n.min.z() << ","
-       << n.max.x() << "," << n.max.y() << "," << n.max.z() << "," << n.count << ","
-       << n.mean.x() << "," << n.mean.y() << "," << n.mean.z() << "\n";
+       << n.max.x() << "," << n.max.y() << "," << n.max.z() << "," << n.count << "," << n.mean.x()
+       << "," << n.mean.y() << "," << n.mean.z() << "\n";
   }
   return os.str();
 }

@@ -3,8 +3,8 @@
 #include <iostream>
 #include <new>
 
-#include <CLI/CLI.hpp>
 #include <pcl/console/print.h>
+#include <CLI/CLI.hpp>
 
 #include "commands.h"
 #include "metricmap/version.h"

@@ -34,13 +34,16 @@ std::string parseStudyConfig(const std::string& text, StudyConfig& out) {
     if (eq == std::string::npos) return "'" + item + "' is not key=value";
     const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
     if (key == "cell_size") {
-      if (!parsePositive(value, out.cell_size)) return "cell_size must be a finite number > 0, got '" + value + "'";
+      if (!parsePositive(value, out.cell_size))
+        return "cell_size must be a finite number > 0, got '" + value + "'";
       seen[0] = true;
     } else if (key == "min_cell_size") {
-      if (!parsePositive(value, out.min_cell_size)) return "min_cell_size must be a finite number > 0, got '" + value + "'";
+      if (!parsePositive(value, out.min_cell_size))
+        return "min_cell_size must be a finite number > 0, got '" + value + "'";
       seen[1] = true;
     } else if (key == "max_points") {
-      if (!parseCount(value, out.max_points)) return "max_points must be a whole number >= 0, got '" + value + "'";
+      if (!parseCount(value, out.max_points))
+        return "max_points must be a whole number >= 0, got '" + value + "'";
       seen[2] = true;
     } else {
       return "unknown key '" + key + "' (cell_size, min_cell_size, max_points)";

@@ -1,6 +1,7 @@
 #pragma once
 /// \file study_config.h
-/// \brief One configuration of the grid-vs-octree study: "cell_size=S,min_cell_size=M,max_points=N".
+/// \brief One configuration of the grid-vs-octree study:
+/// "cell_size=S,min_cell_size=M,max_points=N".
 
 #include <cstddef>
 #include <string>

@@ -21,9 +21,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }();
   (void)quiet;
   const std::string bytes(reinterpret_cast<const char*>(data), size);
-  const char* ext = bytes.rfind("ply", 0) == 0                  ? ".ply"
+  const char* ext = bytes.rfind("ply", 0) == 0                ? ".ply"
                     : bytes.find("DATA") != std::string::npos ? ".pcd"
-                                                                : ".bin";
+                                                              : ".bin";
   const std::string path = "/tmp/metricmap_fuzz_" + std::to_string(::getpid()) + ext;
   std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(size));
   auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();

@@ -40,7 +40,8 @@ void refBuild(RefNode& n, const Cloud& c, std::size_t max_points, double min_cel
   }
   for (int i : n.points) {
     const pcl::PointXYZ& p = c[i];
-    const unsigned o = (p.x >= mid[0] ? 1u : 0u) | (p.y >= mid[1] ? 2u : 0u) | (p.z >= mid[2] ? 4u : 0u);
+    const unsigned o =
+        (p.x >= mid[0] ? 1u : 0u) | (p.y >= mid[1] ? 2u : 0u) | (p.z >= mid[2] ? 4u : 0u);
     n.children[o].points.push_back(i);
   }
   n.points.clear();

@@ -30,8 +30,8 @@ std::string slurp(const std::string& path) {
 class TempDir {
  public:
   TempDir() {
-    dir_ = fs::temp_directory_path() / ("metricmap_reader_" + std::to_string(::getpid()) + "_" +
-                                        std::to_string(counter_++));
+    dir_ = fs::temp_directory_path() /
+           ("metricmap_reader_" + std::to_string(::getpid()) + "_" + std::to_string(counter_++));
     fs::create_directories(dir_);
   }
   ~TempDir() { fs::remove_all(dir_); }
@@ -59,9 +59,17 @@ void expectInputError(const std::string& path, const std::string& needle) {
   }
 }
 
-const char* kPclClouds[] = {"bunny.pcd", "bun0.pcd", "lamppost.pcd", "octants.pcd",
-                            "curve_close.pcd", "colored_cloud.pcd", "office1_keypoints.pcd",
-                            "milk.pcd", "milk_color.pcd", "car6.pcd", "cturtle.pcd"};
+const char* kPclClouds[] = {"bunny.pcd",
+                            "bun0.pcd",
+                            "lamppost.pcd",
+                            "octants.pcd",
+                            "curve_close.pcd",
+                            "colored_cloud.pcd",
+                            "office1_keypoints.pcd",
+                            "milk.pcd",
+                            "milk_color.pcd",
+                            "car6.pcd",
+                            "cturtle.pcd"};
 
 }  // namespace
 
@@ -82,7 +90,8 @@ TEST(CloudReader, AgreesWithPclOnItsTestClouds) {
 
 TEST(CloudReader, DropsAndCountsNaN) {
   Cloud cloud;
-  const LoadReport r = loadCloud(dataPath("pcl_test_pcd/table_scene_mug_stereo_textured.pcd"), cloud);
+  const LoadReport r =
+      loadCloud(dataPath("pcl_test_pcd/table_scene_mug_stereo_textured.pcd"), cloud);
   EXPECT_EQ(r.format, "pcd binary_compressed");
   EXPECT_EQ(r.width, 640u);
   EXPECT_EQ(r.height, 480u);
@@ -202,7 +211,8 @@ TEST(CloudReader, BadInputsGiveOneLineErrors) {
                    "truncated ascii body");
   std::string mismatch = header;
   mismatch.replace(mismatch.find("HEIGHT 1"), 8, "HEIGHT 7");
-  expectInputError(tmp.write("mismatch.pcd", mismatch + "DATA ascii\n1 2 3\n"), "differs from POINTS");
+  expectInputError(tmp.write("mismatch.pcd", mismatch + "DATA ascii\n1 2 3\n"),
+                   "differs from POINTS");
   std::string negative = header;
   negative.replace(negative.find("WIDTH 3"), 7, "WIDTH -3");
   expectInputError(tmp.write("negative.pcd", negative + "DATA ascii\n1 2 3\n"), "WIDTH '-3'");
@@ -213,9 +223,10 @@ TEST(CloudReader, BadInputsGiveOneLineErrors) {
   expectInputError(dataPath("no/such/file.pcd"), "cannot open");
   expectInputError(tmp.write("cloud.xyz", "1 2 3\n"), "unknown extension");
   expectInputError(tmp.write("scan.bin", std::string(17, '\0')), "not a multiple of 16");
-  expectInputError(tmp.write("bad.ply", "ply\nformat ascii 1.0\nelement vertex 1000000000\n"
-                                        "property float x\nproperty float y\nproperty float z\n"
-                                        "end_header\n1 2 3\n"),
+  expectInputError(tmp.write("bad.ply",
+                             "ply\nformat ascii 1.0\nelement vertex 1000000000\n"
+                             "property float x\nproperty float y\nproperty float z\n"
+                             "end_header\n1 2 3\n"),
                    "announces 1000000000 vertices");
   expectInputError(tmp.write("noend.ply", "ply\nformat ascii 1.0\n"), "no end_header");
 
@@ -223,7 +234,8 @@ TEST(CloudReader, BadInputsGiveOneLineErrors) {
   std::string milk = slurp(dataPath("pcl_test_pcd/milk.pcd"));
   const std::size_t body = milk.find("DATA binary_compressed\n") + 23;
   std::string corrupt = milk;
-  for (std::size_t i = body + 8 + 100; i < body + 8 + 4000 && i < corrupt.size(); ++i) corrupt[i] = '\xff';
+  for (std::size_t i = body + 8 + 100; i < body + 8 + 4000 && i < corrupt.size(); ++i)
+    corrupt[i] = '\xff';
   expectInputError(tmp.write("corrupt.pcd", corrupt), "could not decode");
   expectInputError(tmp.write("cut.pcd", milk.substr(0, milk.size() / 2)),
                    "truncated binary_compressed body");

@@ -14,7 +14,8 @@ namespace fs = std::filesystem;
 TEST(CloudWriter, EveryEncodingRoundTrips) {
   pcl::PointCloud<pcl::PointXYZ> cloud;
   loadCloud(dataPath("pcl_test_pcd/car6.pcd"), cloud);
-  const fs::path dir = fs::temp_directory_path() / ("metricmap_writer_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("metricmap_writer_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   for (const char* name : {"ascii", "binary", "binary_compressed"}) {
     const std::string path = (dir / (std::string(name) + ".pcd")).string();
@@ -38,7 +39,8 @@ TEST(CloudWriter, EveryEncodingRoundTrips) {
 TEST(CloudWriter, FailureLeavesNothing) {
   pcl::PointCloud<pcl::PointXYZ> cloud;
   cloud.push_back(pcl::PointXYZ(1, 2, 3));
-  EXPECT_THROW(savePcdAtomic("/nonexistent-dir/x.pcd", cloud, PcdFormat::Binary), std::runtime_error);
+  EXPECT_THROW(savePcdAtomic("/nonexistent-dir/x.pcd", cloud, PcdFormat::Binary),
+               std::runtime_error);
   EXPECT_THROW(writeTextAtomic("/nonexistent-dir/x.csv", "a"), std::runtime_error);
   EXPECT_THROW(parsePcdFormat("binary-compressed"), std::invalid_argument);
 }

@@ -57,8 +57,8 @@ TEST_P(OctreeVsPcl, SameOccupiedLeaves) {
     const OctreeNode& n = octree.getNodes()[id];
     ASSERT_EQ(n.depth, static_cast<unsigned>(k));
     const Eigen::Vector3d key = ((n.min - lo) / res).array().round();
-    actual[Key{static_cast<long>(key.x()), static_cast<long>(key.y()), static_cast<long>(key.z())}] =
-        n.count;
+    actual[Key{static_cast<long>(key.x()), static_cast<long>(key.y()),
+               static_cast<long>(key.z())}] = n.count;
   }
   EXPECT_EQ(octree.getStatistics().occupied_leaves, pcl_octree.getLeafCount());
   EXPECT_EQ(actual, expected);

@@ -61,9 +61,10 @@ int main(int argc, char** argv) {
   for (const char* s : {"ciencias000", "museo000", "poli000", "poli001"}) {
     cmd += " " + data + s + ".pcd";
   }
-  cmd += " --config cell_size=1.0,min_cell_size=1.0,max_points=100"
-         " --config cell_size=0.5,min_cell_size=0.5,max_points=100"
-         " --config cell_size=2.0,min_cell_size=1.0,max_points=200 --format json";
+  cmd +=
+      " --config cell_size=1.0,min_cell_size=1.0,max_points=100"
+      " --config cell_size=0.5,min_cell_size=0.5,max_points=100"
+      " --config cell_size=2.0,min_cell_size=1.0,max_points=200 --format json";
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
   std::string out;
   char buf[4096];
@@ -74,7 +75,8 @@ int main(int argc, char** argv) {
   std::size_t checked = 0;
   for (const auto& r : records) {
     std::string file = r.at("file");
-    const std::string scan = file.substr(file.find_last_of('/') + 1, file.size() - file.find_last_of('/') - 5);
+    const std::string scan =
+        file.substr(file.find_last_of('/') + 1, file.size() - file.find_last_of('/') - 5);
     int config = -1;
     for (int c = 0; c < 3; ++c) {
       if (std::fabs(r["config"]["cell_size"].get<double>() - kConfigs[c][0]) < 1e-9 &&
@@ -93,18 +95,22 @@ int main(int argc, char** argv) {
     const auto& o = r["octree"];
     const std::string tag = scan + " config " + std::to_string(config + 1) + ": ";
     expect(g["total_cells"] == p.grid_total, tag + "grid total " + g["total_cells"].dump());
-    expect(g["occupied_cells"] == p.grid_occupied, tag + "grid occupied " + g["occupied_cells"].dump());
+    expect(g["occupied_cells"] == p.grid_occupied,
+           tag + "grid occupied " + g["occupied_cells"].dump());
     expect(g["empty_cells"] == p.grid_empty, tag + "grid empty " + g["empty_cells"].dump());
     expect(std::fabs(g["mean_points_per_occupied_cell"].get<double>() - p.grid_mean) <= 0.005,
            tag + "grid mean " + g["mean_points_per_occupied_cell"].dump());
     expect(o["total_nodes"] == p.nodes, tag + "octree nodes " + o["total_nodes"].dump());
     expect(o["leaf_nodes"] == p.leaves, tag + "octree leaves " + o["leaf_nodes"].dump());
-    expect(o["internal_nodes"] == p.internal, tag + "octree internal " + o["internal_nodes"].dump());
-    expect(o["occupied_leaves"] == p.occupied, tag + "octree occupied " + o["occupied_leaves"].dump());
+    expect(o["internal_nodes"] == p.internal,
+           tag + "octree internal " + o["internal_nodes"].dump());
+    expect(o["occupied_leaves"] == p.occupied,
+           tag + "octree occupied " + o["occupied_leaves"].dump());
     expect(o["empty_leaves"] == p.empty, tag + "octree empty " + o["empty_leaves"].dump());
     const double mean = o["mean_points_per_occupied_leaf"].get<double>();
     expect(mean - p.octree_mean >= -0.005 && mean - p.octree_mean <= 0.035,
-           tag + "octree mean " + std::to_string(mean) + " vs published " + std::to_string(p.octree_mean));
+           tag + "octree mean " + std::to_string(mean) + " vs published " +
+               std::to_string(p.octree_mean));
     expect(o["points"] == r["points"], tag + "octree keeps every point");
     ++checked;
   }

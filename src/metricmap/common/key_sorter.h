@@ -55,10 +55,13 @@ class KeySorter {
   }
 
   std::size_t size() const { return packed_ ? words_.size() : keys_.size(); }
-  std::uint64_t key(std::size_t i) const { return packed_ ? words_[i] >> position_bits_ : keys_[i]; }
+  std::uint64_t key(std::size_t i) const {
+    return packed_ ? words_[i] >> position_bits_ : keys_[i];
+  }
   std::uint32_t position(std::size_t i) const {
-    return packed_ ? static_cast<std::uint32_t>(words_[i] & ((std::uint64_t{1} << position_bits_) - 1))
-                   : positions_[i];
+    return packed_
+               ? static_cast<std::uint32_t>(words_[i] & ((std::uint64_t{1} << position_bits_) - 1))
+               : positions_[i];
   }
 
  private:

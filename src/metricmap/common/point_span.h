@@ -10,10 +10,10 @@ namespace metricmap {
 ///
 /// PCL point types keep x, y, z as the first three floats; `stride` is sizeof(PointT).
 struct PointSpan {
-  const float* base = nullptr;  ///< x of point 0
-  std::size_t stride = 0;       ///< bytes between consecutive points
-  const int* indices = nullptr; ///< optional subset (pcl::Indices data)
-  std::size_t size = 0;         ///< number of points (or indices) in the view
+  const float* base = nullptr;   ///< x of point 0
+  std::size_t stride = 0;        ///< bytes between consecutive points
+  const int* indices = nullptr;  ///< optional subset (pcl::Indices data)
+  std::size_t size = 0;          ///< number of points (or indices) in the view
 
   /// \brief Position in the underlying array of the i-th point of the view.
   std::size_t sourceIndex(std::size_t i) const {

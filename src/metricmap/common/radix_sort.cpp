@@ -37,7 +37,8 @@ void radixSortWords(std::vector<std::uint64_t>& words, std::vector<std::uint64_t
   // All histograms in one read pass.
   std::vector<std::size_t> hist(buckets * static_cast<std::size_t>(p.passes), 0);
   for (const std::uint64_t w : words) {
-    for (int k = 0; k < p.passes; ++k) ++hist[k * buckets + ((w >> (low_bit + k * p.digit_bits)) & mask)];
+    for (int k = 0; k < p.passes; ++k)
+      ++hist[k * buckets + ((w >> (low_bit + k * p.digit_bits)) & mask)];
   }
   scratch.resize(n);
   for (int k = 0; k < p.passes; ++k) {

@@ -46,8 +46,8 @@ std::string tooLarge(const GridLayout& layout, float cell) {
 void checkAxis(double cells, float cell_size) {
   if (!(cells < kMaxAxisIndex)) {
     std::ostringstream os;
-    os << "cell size " << cell_size << " is too small for the cloud's coordinates ("
-       << cells << " cells along one axis)";
+    os << "cell size " << cell_size << " is too small for the cloud's coordinates (" << cells
+       << " cells along one axis)";
     throw CapacityError(os.str());
   }
 }
@@ -69,8 +69,8 @@ GridLayout makeLayout(const Bounds& b, const GridParams& params) {
       checkAxis(std::fabs(lo), params.cell_size);
       checkAxis(std::fabs(hi), params.cell_size);
       layout.min_index[a] = static_cast<std::int64_t>(lo);
-      layout.dims[a] = static_cast<std::uint64_t>(static_cast<std::int64_t>(hi) -
-                                                  layout.min_index[a]) + 1;
+      layout.dims[a] =
+          static_cast<std::uint64_t>(static_cast<std::int64_t>(hi) - layout.min_index[a]) + 1;
       layout.origin[a] = 0.0;
     }
   }
@@ -140,7 +140,7 @@ void buildGrid(const PointSpan& points, const GridParams& params, GridWorkspace&
   }
   sorter.sort();
 
-  constexpr std::size_t kAhead = 16;
+  constexpr std::size_t kAhead = 48;  // prefetch distance, measured (docs/BENCHMARKS.md)
   const std::size_t n = sorter.size();
   for (std::size_t begin = 0; begin < n;) {
     const std::uint64_t key = sorter.key(begin);

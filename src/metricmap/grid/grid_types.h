@@ -31,22 +31,22 @@ struct GridStatistics {
   std::uint64_t occupied_cells = 0;  ///< cells holding at least one point
   std::uint64_t empty_cells = 0;     ///< total_cells - occupied_cells
   double mean_points_per_occupied_cell = 0.0;  ///< points / occupied_cells (0 when empty)
-  std::uint64_t points = 0;          ///< finite points binned (sum of cell counts)
-  std::uint64_t skipped_points = 0;  ///< NaN/Inf points ignored
+  std::uint64_t points = 0;                    ///< finite points binned (sum of cell counts)
+  std::uint64_t skipped_points = 0;            ///< NaN/Inf points ignored
 };
 
 /// \brief One occupied cell.
 struct GridCell {
-  std::array<std::int64_t, 3> index{};  ///< integer cell index (see GridOrigin)
-  std::uint64_t count = 0;              ///< points in the cell
+  std::array<std::int64_t, 3> index{};             ///< integer cell index (see GridOrigin)
+  std::uint64_t count = 0;                         ///< points in the cell
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();  ///< mean of its points (double sums)
   std::size_t first_point = 0;  ///< position in the input cloud of its first point
 };
 
 /// \brief The bounding volume the cells live in.
 struct GridLayout {
-  std::array<std::int64_t, 3> min_index{};  ///< index of the lowest cell per axis
-  std::array<std::uint64_t, 3> dims{};      ///< cells per axis
+  std::array<std::int64_t, 3> min_index{};           ///< index of the lowest cell per axis
+  std::array<std::uint64_t, 3> dims{};               ///< cells per axis
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();  ///< world position of index (0, 0, 0)
   double cell_size = 0.0;
 };

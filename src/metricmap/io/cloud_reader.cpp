@@ -32,7 +32,8 @@ void readPly(const std::string& path, pcl::PCLPointCloud2& blob, LoadReport& rep
   checkPlyFile(path);
   report.format = "ply";
   pcl::PLYReader reader;
-  if (reader.read(path, blob) < 0) throw InputError(path + ": pcl::io could not read this PLY file");
+  if (reader.read(path, blob) < 0)
+    throw InputError(path + ": pcl::io could not read this PLY file");
 }
 
 void checkXyz(const std::string& path, const pcl::PCLPointCloud2& blob) {

@@ -43,9 +43,15 @@ void savePcdAtomic(const std::string& path, const pcl::PointCloud<PointT>& cloud
   int rc = -1;
   try {
     switch (format) {
-      case PcdFormat::Ascii: rc = writer.writeASCII(tmp, cloud, 8); break;
-      case PcdFormat::Binary: rc = writer.writeBinary(tmp, cloud); break;
-      case PcdFormat::BinaryCompressed: rc = writer.writeBinaryCompressed(tmp, cloud); break;
+      case PcdFormat::Ascii:
+        rc = writer.writeASCII(tmp, cloud, 8);
+        break;
+      case PcdFormat::Binary:
+        rc = writer.writeBinary(tmp, cloud);
+        break;
+      case PcdFormat::BinaryCompressed:
+        rc = writer.writeBinaryCompressed(tmp, cloud);
+        break;
     }
   } catch (const pcl::PCLException&) {
     rc = -1;

@@ -18,8 +18,7 @@ PcdFormat parsePcdFormat(const std::string& name);
 /// \brief Save a cloud as PCD; nothing is left at `path` unless the whole file was written.
 /// \throws std::runtime_error naming the file on failure
 template <typename PointT>
-void savePcdAtomic(const std::string& path, const pcl::PointCloud<PointT>& cloud,
-                   PcdFormat format);
+void savePcdAtomic(const std::string& path, const pcl::PointCloud<PointT>& cloud, PcdFormat format);
 
 /// \brief Write text to `path` through a temporary file and a rename.
 /// \throws std::runtime_error naming the file on failure

@@ -54,7 +54,8 @@ void parseHeader(const std::string& path, std::istream& in, PcdHeader& h) {
     } else if (key == "SIZE") {
       for (std::size_t i = 1; i < t.size(); ++i) {
         const auto v = parseCount(path, "SIZE", t[i], 8);
-        if (v != 1 && v != 2 && v != 4 && v != 8) fail(path, "SIZE " + t[i] + " is not 1, 2, 4 or 8");
+        if (v != 1 && v != 2 && v != 4 && v != 8)
+          fail(path, "SIZE " + t[i] + " is not 1, 2, 4 or 8");
         h.sizes.push_back(static_cast<int>(v));
       }
     } else if (key == "TYPE") {
@@ -109,8 +110,7 @@ void parseHeader(const std::string& path, std::istream& in, PcdHeader& h) {
   }
 }
 
-void checkAscii(const std::string& path, std::istream& in, PcdHeader& h,
-                std::uint64_t& skipped) {
+void checkAscii(const std::string& path, std::istream& in, PcdHeader& h, std::uint64_t& skipped) {
   std::uint64_t valid = 0, line_no = 0;
   std::string line;
   while (valid < h.points && std::getline(in, line)) {

@@ -19,7 +19,7 @@ struct PcdHeader {
   std::vector<char> types;
   std::vector<int> counts;
   std::uint64_t width = 0, height = 0, points = 0;
-  std::string data;            ///< ascii, binary or binary_compressed
+  std::string data;               ///< ascii, binary or binary_compressed
   std::uint64_t data_offset = 0;  ///< byte offset of the body
   std::uint64_t point_bytes = 0;  ///< bytes of one point in binary
   std::uint64_t values_per_point = 0;

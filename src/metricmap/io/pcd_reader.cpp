@@ -33,8 +33,8 @@ std::uint8_t datatypeOf(const std::string& path, char type, int size) {
       if (size == 8) return F::UINT64;
       break;
   }
-  throw InputError(path + ": TYPE " + std::string(1, type) + " with SIZE " +
-                   std::to_string(size) + " is not a PCD field type");
+  throw InputError(path + ": TYPE " + std::string(1, type) + " with SIZE " + std::to_string(size) +
+                   " is not a PCD field type");
 }
 
 void layout(const std::string& path, const PcdHeader& h, pcl::PCLPointCloud2& blob) {

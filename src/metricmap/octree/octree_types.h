@@ -19,9 +19,9 @@ constexpr unsigned kOctreeMaxDepth = 21;
 /// \brief AdaptiveOctree parameters.
 struct OctreeParams {
   std::size_t max_points_per_leaf = 100;  ///< split while a node holds more than this
-  float min_cell_size = 1.0f;  ///< ... and its largest edge is longer than this (>= 0)
-  bool cubic_root = false;     ///< root = cube of the largest extent instead of the bbox
-  bool has_root_box = false;   ///< use root_min / root_max instead of the cloud's bounds
+  float min_cell_size = 1.0f;             ///< ... and its largest edge is longer than this (>= 0)
+  bool cubic_root = false;                ///< root = cube of the largest extent instead of the bbox
+  bool has_root_box = false;              ///< use root_min / root_max instead of the cloud's bounds
   Eigen::Vector3d root_min = Eigen::Vector3d::Zero();
   Eigen::Vector3d root_max = Eigen::Vector3d::Zero();
 };
@@ -46,9 +46,9 @@ struct OctreeNode {
   Eigen::Vector3d min = Eigen::Vector3d::Zero();
   Eigen::Vector3d max = Eigen::Vector3d::Zero();
   unsigned depth = 0;
-  std::uint64_t count = 0;                          ///< points inside
+  std::uint64_t count = 0;                         ///< points inside
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();  ///< their mean (zero when empty)
-  std::size_t first_child = kNone;  ///< children are first_child .. first_child + 7
+  std::size_t first_child = kNone;                 ///< children are first_child .. first_child + 7
   std::size_t parent = kNone;
   std::size_t first_point = 0;  ///< its points: point_order[first_point, first_point + count)
 
@@ -60,7 +60,7 @@ struct OctreeNode {
 /// \brief Everything an octree build produces. nodes[0] is the root.
 struct OctreeResult {
   std::vector<OctreeNode> nodes;
-  std::vector<std::uint32_t> point_order;  ///< input positions, grouped leaf by leaf
+  std::vector<std::uint32_t> point_order;    ///< input positions, grouped leaf by leaf
   std::vector<std::size_t> occupied_leaves;  ///< node ids in Morton (depth-first) order
   OctreeStatistics stats;
 };

@@ -22,8 +22,7 @@ void OccupancyGrid<PointT>::compute() {
 template <typename PointT>
 const GridCell* OccupancyGrid<PointT>::findCell(const std::array<std::int64_t, 3>& index) const {
   const auto before = [](const GridCell& c, const std::array<std::int64_t, 3>& i) {
-    return std::make_tuple(c.index[2], c.index[1], c.index[0]) <
-           std::make_tuple(i[2], i[1], i[0]);
+    return std::make_tuple(c.index[2], c.index[1], c.index[0]) < std::make_tuple(i[2], i[1], i[0]);
   };
   auto it = std::lower_bound(result_.cells.begin(), result_.cells.end(), index, before);
   return (it != result_.cells.end() && it->index == index) ? &*it : nullptr;
