@@ -47,3 +47,17 @@ double peakRssMiB() {
 void resetPeakRss() { std::ofstream("/proc/self/clear_refs") << "5"; }
 
 }  // namespace metricmap::bench
+
+namespace metricmap::bench {
+namespace {
+
+// Baseline for memory figures: the process with only the replicated cloud loaded.
+void BM_DataOnly(benchmark::State& state) {
+  const auto cloud = kittiCloud();
+  for (auto _ : state) benchmark::DoNotOptimize(cloud->points.data());
+  report(state, cloud->size(), peakRssMiB());
+}
+BENCHMARK(BM_DataOnly)->Iterations(1);
+
+}  // namespace
+}  // namespace metricmap::bench

@@ -209,36 +209,36 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
     for (unsigned c = 8; c-- > 0;) stack.push_back(first_child + c);
   }
 
-  // Sums: leaves from their points, then children into parents (children come after parents).
+  // Sums: occupied leaves in Morton order cover the sorted points in one sweep, so the gather
+  // can prefetch ahead across leaves; then children into parents (children follow parents).
   std::vector<Eigen::Vector3d>& sums = workspace.sums;
   sums.assign(r.nodes.size(), Eigen::Vector3d::Zero());
   OctreeStatistics& s = r.stats;
   constexpr std::size_t kAhead = 48;  // prefetch distance, measured (docs/BENCHMARKS.md)
-  for (std::size_t id = 0; id < r.nodes.size(); ++id) {
+  for (const std::size_t id : r.occupied_leaves) {
     const OctreeNode& node = r.nodes[id];
-    s.max_depth = std::max(s.max_depth, node.depth);
-    if (!node.isLeaf()) {
-      ++s.internal_nodes;
-      continue;
-    }
-    ++s.leaf_nodes;
-    if (node.count == 0) {
-      ++s.empty_leaves;
-      continue;
-    }
-    ++s.occupied_leaves;
-    s.points += node.count;
     double sx = 0.0, sy = 0.0, sz = 0.0;
     const std::size_t end = node.first_point + node.count;
     for (std::size_t k = node.first_point; k < end; ++k) {
-      if (k + kAhead < end) __builtin_prefetch(points.at(sorter.position(k + kAhead)));
+      if (k + kAhead < n) __builtin_prefetch(points.at(sorter.position(k + kAhead)));
       const float* p = points.at(sorter.position(k));
       sx += p[0];
       sy += p[1];
       sz += p[2];
     }
     sums[id] = Eigen::Vector3d(sx, sy, sz);
+    s.points += node.count;
   }
+  for (const OctreeNode& node : r.nodes) {
+    s.max_depth = std::max(s.max_depth, node.depth);
+    if (!node.isLeaf()) {
+      ++s.internal_nodes;
+    } else if (node.count == 0) {
+      ++s.empty_leaves;
+    }
+  }
+  s.occupied_leaves = r.occupied_leaves.size();
+  s.leaf_nodes = s.occupied_leaves + s.empty_leaves;
   for (std::size_t id = r.nodes.size(); id-- > 1;) sums[r.nodes[id].parent] += sums[id];
   for (std::size_t id = 0; id < r.nodes.size(); ++id) {
     if (r.nodes[id].count > 0) r.nodes[id].mean = sums[id] / static_cast<double>(r.nodes[id].count);
