@@ -22,6 +22,7 @@ void BM_AdaptiveOctree(benchmark::State& state) {
   for (auto _ : state) octree.compute();
   state.counters["occupied_leaves"] = static_cast<double>(octree.getStatistics().occupied_leaves);
   state.counters["max_depth"] = octree.getStatistics().max_depth;
+  state.counters["total_nodes"] = static_cast<double>(octree.getStatistics().total_nodes);
   report(state, cloud->size(), base);
 }
 
