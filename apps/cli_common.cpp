@@ -5,6 +5,7 @@
 
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
+#include "table.h"
 
 namespace metricmap::cli {
 
@@ -30,6 +31,28 @@ LoadReport loadWithWarnings(const std::string& path, pcl::PointCloud<pcl::PointX
   LoadReport report = loadCloud(path, cloud);
   for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
   return report;
+}
+
+LoadedCloud loadTimed(const std::string& path) {
+  const auto t0 = std::chrono::steady_clock::now();
+  LoadedCloud loaded;
+  loaded.cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  loaded.report = loadWithWarnings(path, *loaded.cloud);
+  loaded.seconds = secondsSince(t0);
+  return loaded;
+}
+
+void addFormatOption(CLI::App& app, std::string& format, const std::vector<std::string>& choices) {
+  app.add_option("--format", format, "Output format")
+      ->check(CLI::IsMember(choices))
+      ->capture_default_str();
+}
+
+void emitTable(const Table& table, const std::string& format, const std::string& path) {
+  const TableStyle style = format == "csv"        ? TableStyle::Csv
+                           : format == "markdown" ? TableStyle::Markdown
+                                                  : TableStyle::Aligned;
+  emit(table.render(style), path);
 }
 
 void emit(const std::string& text, const std::string& path) {

@@ -28,6 +28,20 @@ inline double secondsSince(std::chrono::steady_clock::time_point start) {
 /// \brief Load a cloud, printing the reader's warnings to stderr.
 LoadReport loadWithWarnings(const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud);
 
+/// \brief A cloud loaded by loadWithWarnings, with how long it took.
+struct LoadedCloud {
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
+  LoadReport report;
+  double seconds = 0.0;
+};
+LoadedCloud loadTimed(const std::string& path);
+
+/// \brief Adds --format restricted to `choices` (the first is the default shown).
+void addFormatOption(CLI::App& app, std::string& format, const std::vector<std::string>& choices);
+
+/// \brief Print a table in the style --format names: csv, markdown, anything else aligned.
+void emitTable(const class Table& table, const std::string& format, const std::string& path = "");
+
 /// \brief Print to stdout, or write atomically to `path` when it is not empty.
 void emit(const std::string& text, const std::string& path);
 

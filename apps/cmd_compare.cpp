@@ -128,13 +128,10 @@ void runCompare(const CompareOptions& o) {
   if (configs.empty()) configs = studyConfigs();
   std::vector<Record> records;
   for (const std::string& f : o.files) {
-    const auto t0 = std::chrono::steady_clock::now();
-    auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-    loadWithWarnings(f, *cloud);
-    const double load_s = secondsSince(t0);
+    const LoadedCloud loaded = loadTimed(f);
     for (const StudyConfig& c : configs) {
-      records.push_back(study(f, cloud, c, o.pcl_octree));
-      records.back().load_s = load_s;
+      records.push_back(study(f, loaded.cloud, c, o.pcl_octree));
+      records.back().load_s = loaded.seconds;
     }
   }
   emit(render(records, o), o.out);
@@ -158,9 +155,7 @@ void addCompareCommand(CLI::App& app) {
           "CONFIG"));
   sub->add_flag("--pcl-octree", o->pcl_octree,
                 "Also run pcl::octree::OctreePointCloudPointVector (dynamic depth) on each job");
-  sub->add_option("--format", o->format, "Output format")
-      ->check(CLI::IsMember({"table", "markdown", "csv", "json"}))
-      ->capture_default_str();
+  addFormatOption(*sub, o->format, {"table", "markdown", "csv", "json"});
   sub->add_option("--out", o->out, "Write the output to this file instead of stdout");
   sub->callback([o] { runCompare(*o); });
 }

@@ -33,10 +33,8 @@ std::string cellsCsv(const std::vector<GridCell>& cells) {
 }
 
 void runGrid(const GridOptions& o) {
-  const auto t0 = std::chrono::steady_clock::now();
-  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  loadWithWarnings(o.file, *cloud);
-  const double load_s = secondsSince(t0);
+  const LoadedCloud loaded = loadTimed(o.file);
+  const auto& cloud = loaded.cloud;
 
   const auto t1 = std::chrono::steady_clock::now();
   OccupancyGrid<pcl::PointXYZ> grid;
@@ -57,7 +55,7 @@ void runGrid(const GridOptions& o) {
                         {"cell_size", o.cell_size},
                         {"origin", o.origin},
                         {"grid", s},
-                        {"seconds", {{"load", load_s}, {"grid", grid_s}}}};
+                        {"seconds", {{"load", loaded.seconds}, {"grid", grid_s}}}};
     emit(j.dump(2) + "\n", "");
     return;
   }
@@ -66,7 +64,7 @@ void runGrid(const GridOptions& o) {
   t.addRow({o.file, fixed(o.cell_size, 3), o.origin, std::to_string(s.points),
             std::to_string(s.total_cells), std::to_string(s.occupied_cells),
             std::to_string(s.empty_cells), fixed(s.mean_points_per_occupied_cell, 2)});
-  emit(t.render(o.format == "csv" ? TableStyle::Csv : TableStyle::Aligned), "");
+  emitTable(t, o.format);
 }
 
 }  // namespace
@@ -85,9 +83,7 @@ void addGridCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--out", o->out, "Write the cell means as a PCD");
   sub->add_option("--cells", o->cells, "Write one CSV row per occupied cell");
-  sub->add_option("--format", o->format, "Output format")
-      ->check(CLI::IsMember({"table", "csv", "json"}))
-      ->capture_default_str();
+  addFormatOption(*sub, o->format, {"table", "csv", "json"});
   addPcdFormatOption(*sub, o->pcd_format);
   sub->callback([o] { runGrid(*o); });
 }

@@ -52,7 +52,7 @@ void runInfo(const InfoOptions& o) {
   if (o.format == "json") {
     emit(records.dump(2) + "\n", "");
   } else {
-    emit(table.render(o.format == "csv" ? TableStyle::Csv : TableStyle::Aligned), "");
+    emitTable(table, o.format);
   }
 }
 
@@ -62,9 +62,7 @@ void addInfoCommand(CLI::App& app) {
   auto o = std::make_shared<InfoOptions>();
   CLI::App* sub = app.add_subcommand("info", "Format, fields, points, NaN count and bounds");
   sub->add_option("files", o->files, "Point cloud files (.pcd, .ply, .bin)")->required();
-  sub->add_option("--format", o->format, "Output format")
-      ->check(CLI::IsMember({"table", "csv", "json"}))
-      ->capture_default_str();
+  addFormatOption(*sub, o->format, {"table", "csv", "json"});
   sub->callback([o] { runInfo(*o); });
 }
 

@@ -37,10 +37,8 @@ std::string leavesCsv(const std::vector<OctreeNode>& nodes) {
 }
 
 void runOctree(const OctreeOptions& o) {
-  const auto t0 = std::chrono::steady_clock::now();
-  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  loadWithWarnings(o.file, *cloud);
-  const double load_s = secondsSince(t0);
+  const LoadedCloud loaded = loadTimed(o.file);
+  const auto& cloud = loaded.cloud;
 
   const auto t1 = std::chrono::steady_clock::now();
   AdaptiveOctree<pcl::PointXYZ> octree;
@@ -63,7 +61,7 @@ void runOctree(const OctreeOptions& o) {
                         {"min_cell_size", o.min_cell_size},
                         {"cubic_root", o.cubic},
                         {"octree", s},
-                        {"seconds", {{"load", load_s}, {"octree", octree_s}}}};
+                        {"seconds", {{"load", loaded.seconds}, {"octree", octree_s}}}};
     emit(j.dump(2) + "\n", "");
     return;
   }
@@ -75,7 +73,7 @@ void runOctree(const OctreeOptions& o) {
             std::to_string(s.internal_nodes), std::to_string(s.occupied_leaves),
             std::to_string(s.empty_leaves), fixed(s.mean_points_per_occupied_leaf, 2),
             std::to_string(s.max_depth)});
-  emit(t.render(o.format == "csv" ? TableStyle::Csv : TableStyle::Aligned), "");
+  emitTable(t, o.format);
 }
 
 }  // namespace
@@ -94,9 +92,7 @@ void addOctreeCommand(CLI::App& app) {
   sub->add_flag("--cubic", o->cubic, "Root = cube of the largest extent (default: bounding box)");
   sub->add_option("--out", o->out, "Write the occupied-leaf means as a PCD");
   sub->add_option("--leaves", o->leaves, "Write one CSV row per leaf (empty ones too)");
-  sub->add_option("--format", o->format, "Output format")
-      ->check(CLI::IsMember({"table", "csv", "json"}))
-      ->capture_default_str();
+  addFormatOption(*sub, o->format, {"table", "csv", "json"});
   addPcdFormatOption(*sub, o->pcd_format);
   sub->callback([o] { runOctree(*o); });
 }
