@@ -10,5 +10,6 @@ void addInfoCommand(CLI::App& app);
 void addGridCommand(CLI::App& app);
 void addOctreeCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
+void addLinesCommand(CLI::App& app);
 
 }  // namespace metricmap::cli

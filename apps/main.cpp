@@ -20,12 +20,13 @@ int main(int argc, char** argv) {
   metricmap::cli::addGridCommand(app);
   metricmap::cli::addOctreeCommand(app);
   metricmap::cli::addCompareCommand(app);
+  metricmap::cli::addLinesCommand(app);
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
     for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->check_name(argv[1]);
     if (!known) {
       std::cerr << "metricmap: usage: unknown subcommand '" << argv[1]
-                << "' (info, grid, octree, compare; see --help)\n";
+                << "' (info, grid, octree, compare, lines; see --help)\n";
       return 2;
     }
   }

@@ -1,0 +1,222 @@
+// metricmap lines FILE: Split & Merge segments of 2D laser scans (CSV, scan-per-line, CARMEN).
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <memory>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_common.h"
+#include "commands.h"
+#include "metricmap/exceptions.h"
+#include "metricmap/io/cloud_writer.h"
+#include "metricmap/io/laser_scan.h"
+#include "metricmap/lines/split_and_merge.h"
+#include "svg_drawing.h"
+#include "table.h"
+
+namespace metricmap::cli {
+namespace {
+
+struct LinesOptions {
+  std::string file, preset, format = "table", svg, steps, purge = "before-merge";
+  ScanLineFormat scan_format;
+  bool generic = false;
+  long long scan = 0;
+  bool all = false;
+  double distance = 0.05, angle_deg = 5.0, min_length = 0.1, max_gap = 0.0, chi2 = 0.0;
+  long long min_points = 5;
+  double range_sigma = 0.01, bearing_sigma_deg = 0.1;
+};
+
+constexpr double kDeg = M_PI / 180.0;
+
+ScanLog readLog(const LinesOptions& o) {
+  const bool csv = o.file.size() > 4 && o.file.compare(o.file.size() - 4, 4, ".csv") == 0;
+  ScanLog log;
+  if (!o.preset.empty() || o.generic) {
+    log = readScanLines(o.file, o.preset.empty() ? o.scan_format : urg04lxMinesFormat());
+  } else if (csv) {
+    log = readAngleRangeCsv(o.file);
+  } else if (looksLikeCarmen(o.file)) {
+    log = readCarmenLog(o.file);
+  } else {
+    throw InputError(o.file +
+                     ": cannot tell the log format (not .csv, no FLASER/ROBOTLASER1 lines); "
+                     "give --preset or --count");
+  }
+  for (const std::string& w : log.warnings) std::cerr << "warning: " << w << "\n";
+  return log;
+}
+
+SplitAndMergeParams paramsOf(const LinesOptions& o) {
+  SplitAndMergeParams p;
+  p.distance_threshold = o.distance;
+  p.angle_threshold = o.angle_deg * kDeg;
+  p.min_points = static_cast<std::size_t>(o.min_points);
+  p.min_length = o.min_length;
+  p.max_gap = o.max_gap;
+  p.purge_order = o.purge == "after-merge" ? PurgeOrder::AfterMerge : PurgeOrder::BeforeMerge;
+  p.chi2_split = o.chi2 > 0.0;
+  if (p.chi2_split) p.chi2_threshold = o.chi2;
+  p.range_sigma = o.range_sigma;
+  p.bearing_sigma = o.bearing_sigma_deg * kDeg;
+  return p;
+}
+
+nlohmann::json segmentJson(const LineSegment& s) {
+  return {{"first_index", s.first_index},
+          {"last_index", s.last_index},
+          {"start", {s.start.x(), s.start.y()}},
+          {"end", {s.end.x(), s.end.y()}},
+          {"points", s.points},
+          {"length", s.length()},
+          {"angle", s.angle()},
+          {"fit",
+           {{"r", s.fit.r},
+            {"alpha", s.fit.alpha},
+            {"cov", {{s.fit.cov(0, 0), s.fit.cov(0, 1)}, {s.fit.cov(1, 0), s.fit.cov(1, 1)}}}}}};
+}
+
+void runLines(const LinesOptions& o) {
+  const ScanLog log = readLog(o);
+  const std::size_t n_scans = log.scans.size();
+  if (!o.all && static_cast<std::size_t>(o.scan) >= n_scans) {
+    throw std::invalid_argument("--scan " + std::to_string(o.scan) + " is out of range: " + o.file +
+                                " has " + std::to_string(n_scans) + " scan(s)");
+  }
+  const std::size_t first = o.all ? 0 : static_cast<std::size_t>(o.scan);
+  const std::size_t last = o.all ? n_scans : first + 1;
+
+  SplitAndMerge<pcl::PointXYZ> sam;
+  sam.setParams(paramsOf(o));
+  std::vector<pcl::PointCloud<pcl::PointXYZ>::Ptr> clouds;
+  for (std::size_t k = first; k < last; ++k) {
+    clouds.push_back(std::make_shared<pcl::PointCloud<pcl::PointXYZ>>(scanToCloud(log.scans[k])));
+  }
+  int step_no = 0;
+  if (!o.steps.empty()) {
+    std::filesystem::create_directories(o.steps);
+    sam.setStepCallback([&](const std::string& what, const std::vector<LineSegment>& segs) {
+      std::ostringstream name;
+      name << o.steps << "/step_" << std::setw(4) << std::setfill('0') << ++step_no << "_" << what
+           << ".svg";
+      writeTextAtomic(name.str(),
+                      drawScanSvg(*clouds.front(), segs,
+                                  "step " + std::to_string(step_no) + ": " + what + ", " +
+                                      std::to_string(segs.size()) + " segments"));
+    });
+  }
+
+  std::vector<std::vector<LineSegment>> results(clouds.size());
+  std::vector<pcl::PointIndices> members;
+  double seconds = 0.0;
+  for (std::size_t k = 0; k < clouds.size(); ++k) {
+    sam.setInputCloud(clouds[k]);
+    const auto t0 = std::chrono::steady_clock::now();
+    sam.segment(results[k], members);
+    seconds += secondsSince(t0);
+  }
+  if (!o.svg.empty()) {
+    writeTextAtomic(o.svg, drawScanSvg(*clouds.front(), results.front(),
+                                       o.file + " scan " + std::to_string(first) + ": " +
+                                           std::to_string(results.front().size()) + " segments"));
+  }
+
+  if (o.format == "json") {
+    nlohmann::json scans = nlohmann::json::array();
+    for (std::size_t k = 0; k < results.size(); ++k) {
+      nlohmann::json segs = nlohmann::json::array();
+      for (const LineSegment& s : results[k]) segs.push_back(segmentJson(s));
+      scans.push_back(
+          {{"scan", first + k}, {"points", log.scans[first + k].validBeams()}, {"segments", segs}});
+    }
+    const double rate = seconds > 0.0 ? static_cast<double>(results.size()) / seconds : 0.0;
+    emit(nlohmann::json({{"file", o.file},
+                         {"scans", scans},
+                         {"skipped_lines", log.skipped_lines},
+                         {"seconds", seconds},
+                         {"scans_per_second", rate}})
+                 .dump(2) +
+             "\n",
+         "");
+    return;
+  }
+  Table t({"scan", "first_index", "last_index", "points", "length", "angle_deg", "start_x",
+           "start_y", "end_x", "end_y", "fit_r", "fit_alpha_deg"});
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    for (const LineSegment& s : results[k]) {
+      t.addRow({std::to_string(first + k), std::to_string(s.first_index),
+                std::to_string(s.last_index), std::to_string(s.points), fixed(s.length(), 3),
+                fixed(s.angle() / kDeg, 2), fixed(s.start.x(), 3), fixed(s.start.y(), 3),
+                fixed(s.end.x(), 3), fixed(s.end.y(), 3), fixed(s.fit.r, 3),
+                fixed(s.fit.alpha / kDeg, 2)});
+    }
+  }
+  emitTable(t, o.format);
+}
+
+}  // namespace
+
+void addLinesCommand(CLI::App& app) {
+  auto o = std::make_shared<LinesOptions>();
+  CLI::App* sub = app.add_subcommand("lines", "Split & Merge line segments of 2D laser scans");
+  sub->add_option("file", o->file,
+                  "Scan log: .csv (angle,range), one scan per line (--preset or --count), or "
+                  "CARMEN (FLASER/ROBOTLASER1)")
+      ->required();
+  sub->add_option("--preset", o->preset, "Known log layout")
+      ->check(CLI::IsMember({"urg04lx-mines"}));
+  ScanLineFormat& f = o->scan_format;
+  auto generic = [o](const std::string&) { o->generic = true; };
+  sub->add_option("--skip-tokens", f.skip_tokens, "Tokens before the ranges")
+      ->check(kCount)
+      ->each(generic);
+  sub->add_option("--count", f.count, "Ranges per scan")->check(kCount)->each(generic);
+  sub->add_option("--angle-min-deg", f.angle_min_deg, "Angle of beam 0")->each(generic);
+  sub->add_option("--angle-increment-deg", f.angle_increment_deg, "Angle between beams")
+      ->each(generic);
+  sub->add_option("--range-scale", f.range_scale, "Raw range x scale = metres")
+      ->check(kFinitePositive)
+      ->each(generic);
+  sub->add_option("--min-range", f.min_range, "Smaller ranges (m) are invalid")->each(generic);
+  sub->add_option("--max-range", f.max_range, "Larger ranges (m) are invalid")->each(generic);
+  auto* scan = sub->add_option("--scan", o->scan, "Scan to segment (0-based)")->check(kCount);
+  sub->add_flag("--all", o->all, "Segment every scan")->excludes(scan);
+  sub->add_option("--distance-threshold", o->distance, "d_th: split distance, metres")
+      ->check(kFinitePositive)
+      ->capture_default_str();
+  sub->add_option("--angle-threshold-deg", o->angle_deg, "a_th: merge angle, degrees (0: no merge)")
+      ->check(CLI::Range(0.0, 180.0))
+      ->capture_default_str();
+  sub->add_option("--min-points", o->min_points, "Purge segments with fewer points (0: off)")
+      ->check(kCount)
+      ->capture_default_str();
+  sub->add_option("--min-length", o->min_length, "Purge shorter segments, metres (0: off)")
+      ->check(CLI::Range(0.0, 1e9))
+      ->capture_default_str();
+  sub->add_option("--max-gap", o->max_gap, "Split where neighbours are further apart (0: off)")
+      ->check(CLI::Range(0.0, 1e9))
+      ->capture_default_str();
+  sub->add_option("--purge", o->purge, "When purge runs")
+      ->check(CLI::IsMember({"before-merge", "after-merge"}))
+      ->capture_default_str();
+  sub->add_option("--chi2", o->chi2,
+                  "Split on d^2/var(d) > this (chi-square, 1 dof) instead of --distance-threshold")
+      ->check(kFinitePositive);
+  sub->add_option("--range-sigma", o->range_sigma, "Range noise, metres")
+      ->check(CLI::Range(0.0, 1e3))
+      ->capture_default_str();
+  sub->add_option("--bearing-sigma-deg", o->bearing_sigma_deg, "Bearing noise, degrees")
+      ->check(CLI::Range(0.0, 180.0))
+      ->capture_default_str();
+  addFormatOption(*sub, o->format, {"table", "csv", "json"});
+  sub->add_option("--svg", o->svg, "Draw the scan and its segments (not with --all)")
+      ->excludes("--all");
+  sub->add_option("--steps", o->steps, "Write one SVG per split/merge/purge step to DIR")
+      ->excludes("--all");
+  sub->callback([o] { runLines(*o); });
+}
+
+}  // namespace metricmap::cli

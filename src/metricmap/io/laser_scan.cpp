@@ -1,0 +1,216 @@
+#include "metricmap/io/laser_scan.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "metricmap/exceptions.h"
+
+namespace metricmap {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::ifstream openText(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open");
+  return in;
+}
+
+bool parseDouble(const std::string& s, double& v) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  v = std::strtod(s.c_str(), &end);
+  return *end == '\0' && std::isfinite(v);
+}
+
+std::vector<std::string> tokens(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream is(line);
+  for (std::string t; is >> t;) out.push_back(t);
+  return out;
+}
+
+void requireScans(const std::string& path, const ScanLog& log) {
+  if (log.scans.empty()) {
+    throw InputError(path + ": no scan found" +
+                     (log.skipped_lines
+                          ? " (" + std::to_string(log.skipped_lines) + " malformed lines skipped)"
+                          : std::string()));
+  }
+}
+
+void warnSkipped(const std::string& path, ScanLog& log) {
+  if (log.skipped_lines > 0) {
+    log.warnings.push_back(path + ": skipped " + std::to_string(log.skipped_lines) +
+                           " malformed scan line(s)");
+  }
+}
+
+/// Parse ranges tokens[first, first + n) into `scan`; false if one is not a number.
+bool fillRanges(const std::vector<std::string>& t, std::size_t first, std::size_t n, double start,
+                double step, double scale, double min_r, double max_r, LaserScan& scan) {
+  scan.angles.resize(n);
+  scan.ranges.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    double raw = 0.0;
+    if (!parseDouble(t[first + k], raw)) return false;
+    const double r = raw * scale;
+    scan.angles[k] = start + step * static_cast<double>(k);
+    scan.ranges[k] = (r >= min_r && r <= max_r && r > 0.0) ? r : kNaN;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::size_t LaserScan::validBeams() const {
+  std::size_t n = 0;
+  for (double r : ranges) n += std::isfinite(r) ? 1 : 0;
+  return n;
+}
+
+ScanLineFormat urg04lxMinesFormat() {
+  ScanLineFormat f;
+  f.skip_tokens = 24;
+  f.count = 682;
+  f.angle_min_deg = -120.0;
+  f.angle_increment_deg = 240.0 / 681.0;
+  f.range_scale = 0.001;
+  f.min_range = 0.020;
+  return f;
+}
+
+void validateScanLineFormat(const ScanLineFormat& f) {
+  if (f.count == 0) throw std::invalid_argument("--count must be > 0");
+  if (!std::isfinite(f.angle_min_deg))
+    throw std::invalid_argument("--angle-min-deg must be finite");
+  if (!std::isfinite(f.angle_increment_deg) || f.angle_increment_deg == 0.0) {
+    throw std::invalid_argument("--angle-increment-deg must be finite and non-zero");
+  }
+  if (!std::isfinite(f.range_scale) || !(f.range_scale > 0.0)) {
+    throw std::invalid_argument("--range-scale must be a finite number > 0");
+  }
+  if (!(f.min_range >= 0.0) || std::isnan(f.max_range) || !(f.max_range > f.min_range)) {
+    throw std::invalid_argument("ranges need 0 <= --min-range < --max-range");
+  }
+}
+
+ScanLog readAngleRangeCsv(const std::string& path) {
+  std::ifstream in = openText(path);
+  ScanLog log;
+  LaserScan scan;
+  std::string line;
+  for (std::size_t n = 1; std::getline(in, line); ++n) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    const auto comma = line.find(',');
+    double a = 0.0, r = 0.0;
+    if (comma == std::string::npos || !parseDouble(line.substr(0, comma), a) ||
+        !parseDouble(line.substr(comma + 1), r)) {
+      throw InputError(path + ": line " + std::to_string(n) + ": expected 'angle,range', got '" +
+                       line.substr(0, 40) + "'");
+    }
+    scan.angles.push_back(a);
+    scan.ranges.push_back(r > 0.0 ? r : kNaN);
+  }
+  if (!scan.angles.empty()) log.scans.push_back(std::move(scan));
+  requireScans(path, log);
+  return log;
+}
+
+ScanLog readScanLines(const std::string& path, const ScanLineFormat& f) {
+  validateScanLineFormat(f);
+  std::ifstream in = openText(path);
+  ScanLog log;
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> t = tokens(line);
+    if (t.empty()) continue;
+    LaserScan scan;
+    if (t.size() < f.skip_tokens + f.count ||
+        !fillRanges(t, f.skip_tokens, f.count, f.angle_min_deg * kDeg, f.angle_increment_deg * kDeg,
+                    f.range_scale, f.min_range, f.max_range, scan)) {
+      ++log.skipped_lines;
+      continue;
+    }
+    log.scans.push_back(std::move(scan));
+  }
+  warnSkipped(path, log);
+  requireScans(path, log);
+  return log;
+}
+
+bool looksLikeCarmen(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  for (int n = 0; n < 200 && std::getline(in, line); ++n) {
+    if (line.rfind("FLASER ", 0) == 0 || line.rfind("ROBOTLASER1 ", 0) == 0) return true;
+  }
+  return false;
+}
+
+ScanLog readCarmenLog(const std::string& path) {
+  std::ifstream in = openText(path);
+  ScanLog log;
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> t = tokens(line);
+    if (t.empty()) continue;
+    LaserScan scan;
+    bool ok = false;
+    double n_raw = 0.0;
+    if (t[0] == "FLASER" && t.size() >= 2 && parseDouble(t[1], n_raw) && n_raw >= 1 &&
+        n_raw == std::floor(n_raw)) {
+      const auto n = static_cast<std::size_t>(n_raw);
+      const double step =
+          (n % 2 == 1 && n > 1) ? M_PI / static_cast<double>(n - 1) : M_PI / static_cast<double>(n);
+      ok = t.size() >= 2 + n && fillRanges(t, 2, n, -M_PI / 2, step, 1.0, 0.0,
+                                           std::numeric_limits<double>::infinity(), scan);
+    } else if (t[0] == "ROBOTLASER1" && t.size() >= 9) {
+      double start = 0, fov = 0, res = 0, max_r = 0;
+      ok = parseDouble(t[2], start) && parseDouble(t[3], fov) && parseDouble(t[4], res) &&
+           parseDouble(t[5], max_r) && parseDouble(t[8], n_raw) && n_raw >= 1 &&
+           n_raw == std::floor(n_raw) && res > 0.0;
+      if (ok) {
+        const auto n = static_cast<std::size_t>(n_raw);
+        ok = t.size() >= 9 + n && fillRanges(t, 9, n, start, res, 1.0, 0.0,
+                                             max_r > 0.0 ? max_r * (1 - 1e-9) : INFINITY, scan);
+      }
+    } else {
+      continue;  // odometry, parameters, other sensors
+    }
+    if (!ok) {
+      ++log.skipped_lines;
+      continue;
+    }
+    log.scans.push_back(std::move(scan));
+  }
+  warnSkipped(path, log);
+  requireScans(path, log);
+  return log;
+}
+
+pcl::PointCloud<pcl::PointXYZ> scanToCloud(const LaserScan& scan) {
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  cloud.resize(scan.ranges.size());
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (std::size_t k = 0; k < scan.ranges.size(); ++k) {
+    const double r = scan.ranges[k];
+    if (std::isfinite(r)) {
+      cloud[k] = pcl::PointXYZ(static_cast<float>(r * std::cos(scan.angles[k])),
+                               static_cast<float>(r * std::sin(scan.angles[k])), 0.0f);
+    } else {
+      cloud[k] = pcl::PointXYZ(nan, nan, nan);
+    }
+  }
+  cloud.width = static_cast<std::uint32_t>(cloud.size());
+  cloud.height = 1;
+  cloud.is_dense = false;
+  return cloud;
+}
+
+}  // namespace metricmap

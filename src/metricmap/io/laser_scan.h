@@ -1,0 +1,68 @@
+#pragma once
+/// \file laser_scan.h
+/// \brief 2D laser scans: readers for CSV "angle,range", one-scan-per-line logs (URG/Mines and
+/// generic), CARMEN FLASER/ROBOTLASER1 logs; conversion to an ordered PCL cloud.
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+namespace metricmap {
+
+/// \brief One scan: beam k has angles[k] (radians, counter-clockwise, x forward) and ranges[k]
+/// (metres; NaN where the beam is invalid).
+struct LaserScan {
+  std::vector<double> angles;
+  std::vector<double> ranges;
+  std::size_t validBeams() const;
+};
+
+/// \brief Scans read from a file, plus what was skipped.
+struct ScanLog {
+  std::vector<LaserScan> scans;
+  std::size_t skipped_lines = 0;      ///< lines that could not be a scan (reported, not fatal)
+  std::vector<std::string> warnings;  ///< one line each, naming the file
+};
+
+/// \brief How to read a log with one scan per line.
+struct ScanLineFormat {
+  std::size_t skip_tokens = 0;       ///< tokens before the first range
+  std::size_t count = 0;             ///< ranges per scan (> 0)
+  double angle_min_deg = 0.0;        ///< angle of beam 0
+  double angle_increment_deg = 1.0;  ///< between beams
+  double range_scale = 1.0;          ///< multiply raw ranges to get metres (> 0)
+  double min_range = 0.0;            ///< metres; smaller ranges are invalid
+  double max_range = std::numeric_limits<double>::infinity();  ///< larger ranges are invalid
+};
+
+/// \brief The Mines ParisTech URG-04LX logs (BreezySLAM exp*.dat): skip 24 tokens, 682 ranges
+/// in mm over 240 degrees from -120, ranges under 20 mm invalid.
+ScanLineFormat urg04lxMinesFormat();
+
+/// \throws std::invalid_argument naming the bad value
+void validateScanLineFormat(const ScanLineFormat& format);
+
+/// \brief One scan from "angle,range" lines (radians, metres; CRLF allowed). Ranges <= 0 are
+/// invalid beams. \throws InputError naming the file and line
+ScanLog readAngleRangeCsv(const std::string& path);
+
+/// \brief One scan per line. A line with too few tokens or a non-numeric range is skipped,
+/// counted and warned about. \throws InputError when the file is unreadable or has no scan
+ScanLog readScanLines(const std::string& path, const ScanLineFormat& format);
+
+/// \brief CARMEN logs: FLASER (180 degrees from -90: step pi/(n-1) for an odd count such as
+/// 181 or 361, else pi/n) and ROBOTLASER1 (start, resolution and maximum range from the line);
+/// other lines are ignored. \throws InputError when the file is unreadable or has no scan
+ScanLog readCarmenLog(const std::string& path);
+
+/// \brief True when the file has FLASER or ROBOTLASER1 lines (checks the first 200 lines).
+bool looksLikeCarmen(const std::string& path);
+
+/// \brief Ordered cloud, one point per beam (x = r cos a, y = r sin a, z = 0; NaN if invalid).
+pcl::PointCloud<pcl::PointXYZ> scanToCloud(const LaserScan& scan);
+
+}  // namespace metricmap
