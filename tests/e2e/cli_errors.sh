@@ -53,6 +53,25 @@ expect 1 "$tmp/missing.pcd" -- "$MM" compare "$tmp/missing.pcd"
 expect 1 "$tmp/missing.pcd" -- "$MM" compare "$scan" "$tmp/missing.pcd" --out "$tmp/study.md"
 check "no table left when one input is bad" test ! -e "$tmp/study.md"
 
+# lines: bad scans and thresholds.
+mines=$DATA/breezyslam_mines_urg04lx/exp2.dat
+printf '0.1,1.0\r\n0.2,abc\r\n' >"$tmp/bad.csv"
+: >"$tmp/empty.csv"
+printf '1 2 3\n' >"$tmp/unknown.dat"
+expect 1 "$tmp/bad.csv" -- "$MM" lines "$tmp/bad.csv"
+expect 1 "$tmp/empty.csv" -- "$MM" lines "$tmp/empty.csv"
+expect 1 "$tmp/unknown.dat" -- "$MM" lines "$tmp/unknown.dat"
+expect 1 "$tmp/missing.csv" -- "$MM" lines "$tmp/missing.csv"
+expect 1 "out of range" -- "$MM" lines "$mines" --preset urg04lx-mines --scan 641
+expect 1 "no scan" -- "$MM" lines "$tmp/unknown.dat" --count 5
+for v in 0 -0.1 nan abc; do
+  expect 2 "--distance-threshold" -- "$MM" lines "$mines" --preset urg04lx-mines --distance-threshold "$v"
+done
+expect 2 "--angle-threshold-deg" -- "$MM" lines "$mines" --preset urg04lx-mines --angle-threshold-deg -1
+expect 2 "--min-points" -- "$MM" lines "$mines" --preset urg04lx-mines --min-points -2
+expect 2 "--svg" -- "$MM" lines "$mines" --preset urg04lx-mines --all --svg "$tmp/x.svg"
+expect 2 "--preset" -- "$MM" lines "$mines" --preset sick
+
 # Output errors: exit 1, nothing half-written.
 expect 1 "$tmp/nodir/means.pcd" -- "$MM" grid "$scan" --cell-size 1 --out "$tmp/nodir/means.pcd"
 expect 1 "$tmp/nodir/cells.csv" -- "$MM" grid "$scan" --cell-size 1 --cells "$tmp/nodir/cells.csv"

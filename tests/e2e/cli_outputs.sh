@@ -37,4 +37,17 @@ check "kitti bin accepted" "$MM" grid "$DATA/kitti_odometry_00/sequences/00/velo
   --cell-size 0.1 --origin world >/dev/null
 check "poli001 warns once" bash -c \
   "'$MM' info '$DATA/ua_mapas_metricos_pcd/poli001.pcd' 2>&1 >/dev/null | grep -c 'skipped 6 malformed' | grep -qx 1"
+mines=$DATA/breezyslam_mines_urg04lx/exp2.dat
+check "lines on all 641 URG scans" bash -c \
+  "'$MM' lines '$mines' --preset urg04lx-mines --all --format json >'$tmp/lines.json'"
+check "641 scans in the JSON" test "$(grep -c '"scan":' "$tmp/lines.json")" = 641
+check "scans_per_second reported" grep -q '"scans_per_second"' "$tmp/lines.json"
+check "lines on lidar01.csv with a drawing and steps" "$MM" lines \
+  "$DATA/pythonrobotics_lidar01/lidar01.csv" --svg "$tmp/l.svg" --steps "$tmp/steps" --format csv
+check "the drawing is an SVG with segments" grep -q "<line" "$tmp/l.svg"
+check "one picture per step" test "$(ls "$tmp/steps" | grep -c 'split.svg$')" -ge 3
+check "generic flags read the URG log like the preset" bash -c \
+  "diff <('$MM' lines '$mines' --preset urg04lx-mines --scan 7) <('$MM' lines '$mines' --scan 7 \
+   --skip-tokens 24 --count 682 --angle-min-deg -120 --angle-increment-deg 0.35242290748898675 \
+   --range-scale 0.001 --min-range 0.02)"
 finish
