@@ -11,4 +11,4 @@ cmake -S "$source_dir" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" \
 cmake --build "$work/build" -j 2 >/dev/null
 out=$("$work/build/consumer" "$data")
 echo "$out"
-echo "$out" | grep -q "79149 points, 338 occupied cells, 1212 occupied leaves"
+echo "$out" | grep -q "^2 segments; .*79149 points, 338 occupied cells, 1212 occupied leaves"
