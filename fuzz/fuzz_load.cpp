@@ -1,5 +1,6 @@
-// libFuzzer target for the loading path: any bytes, as .pcd/.ply/.bin, must either load or
-// raise InputError, never crash, hang or allocate without bound; what loads is then binned.
+// libFuzzer target for the loading paths: any bytes, as .pcd/.ply/.bin and as a 2D scan log, must
+// either load or raise InputError, never crash, hang or allocate without bound; what loads is
+// then binned or segmented.
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
@@ -12,6 +13,8 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/grid/occupancy_grid.h"
 #include "metricmap/io/cloud_reader.h"
+#include "metricmap/io/laser_scan.h"
+#include "metricmap/lines/split_and_merge.h"
 #include "metricmap/octree/adaptive_octree.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -40,6 +43,30 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     octree.compute();
   } catch (const metricmap::InputError&) {
   } catch (const metricmap::CapacityError&) {
+  }
+  // The same bytes as a 2D scan log, through each scan reader and Split & Merge.
+  using Reader = metricmap::ScanLog (*)(const std::string&);
+  static const Reader readers[] = {metricmap::readAngleRangeCsv, metricmap::readCarmenLog,
+                                   [](const std::string& p) {
+                                     return metricmap::readScanLines(
+                                         p, metricmap::urg04lxMinesFormat());
+                                   },
+                                   [](const std::string& p) {
+                                     metricmap::ScanLineFormat f;
+                                     f.count = 4;
+                                     return metricmap::readScanLines(p, f);
+                                   }};
+  for (const Reader read : readers) {
+    try {
+      const metricmap::ScanLog log = read(path);
+      metricmap::SplitAndMerge<pcl::PointXYZ> sam;
+      sam.setInputCloud(std::make_shared<pcl::PointCloud<pcl::PointXYZ>>(
+          metricmap::scanToCloud(log.scans.front())));
+      std::vector<metricmap::LineSegment> segments;
+      std::vector<pcl::PointIndices> members;
+      sam.segment(segments, members);
+    } catch (const metricmap::InputError&) {
+    }
   }
   std::remove(path.c_str());
   return 0;
