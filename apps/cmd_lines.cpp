@@ -13,6 +13,7 @@
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/laser_scan.h"
 #include "metricmap/lines/split_and_merge.h"
+#include "png_drawing.h"
 #include "svg_drawing.h"
 #include "table.h"
 
@@ -20,7 +21,7 @@ namespace metricmap::cli {
 namespace {
 
 struct LinesOptions {
-  std::string file, preset, format = "table", svg, steps, purge = "before-merge";
+  std::string file, preset, format = "table", svg, png, steps, purge = "before-merge";
   ScanLineFormat scan_format;
   bool generic = false;
   long long scan = 0;
@@ -118,6 +119,7 @@ void runLines(const LinesOptions& o) {
     sam.segment(results[k], members);
     seconds += secondsSince(t0);
   }
+  if (!o.png.empty()) writeScanPng(o.png, *clouds.front(), results.front());
   if (!o.svg.empty()) {
     writeTextAtomic(o.svg, drawScanSvg(*clouds.front(), results.front(),
                                        o.file + " scan " + std::to_string(first) + ": " +
@@ -213,6 +215,8 @@ void addLinesCommand(CLI::App& app) {
       ->capture_default_str();
   addFormatOption(*sub, o->format, {"table", "csv", "json"});
   sub->add_option("--svg", o->svg, "Draw the scan and its segments (not with --all)")
+      ->excludes("--all");
+  sub->add_option("--png", o->png, "Draw the scan and its segments as PNG (not with --all)")
       ->excludes("--all");
   sub->add_option("--steps", o->steps, "Write one SVG per split/merge/purge step to DIR")
       ->excludes("--all");

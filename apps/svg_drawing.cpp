@@ -1,5 +1,7 @@
 #include "svg_drawing.h"
 
+#include "scan_view.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -7,14 +9,6 @@
 
 namespace metricmap::cli {
 namespace {
-
-std::string colour(std::size_t k) {
-  // Golden-angle hues: neighbours get clearly different colours.
-  const double h = std::fmod(static_cast<double>(k) * 137.508, 360.0);
-  std::ostringstream os;
-  os << "hsl(" << static_cast<int>(h) << ",85%,42%)";
-  return os.str();
-}
 
 std::string escape(const std::string& s) {
   std::string out;
@@ -35,18 +29,10 @@ std::string escape(const std::string& s) {
 
 std::string drawScanSvg(const pcl::PointCloud<pcl::PointXYZ>& scan,
                         const std::vector<LineSegment>& segments, const std::string& title) {
-  double lo_x = 0, lo_y = 0, hi_x = 0, hi_y = 0;  // the sensor (origin) is always in view
-  for (const auto& p : scan) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-    lo_x = std::min<double>(lo_x, p.x);
-    hi_x = std::max<double>(hi_x, p.x);
-    lo_y = std::min<double>(lo_y, p.y);
-    hi_y = std::max<double>(hi_y, p.y);
-  }
-  const double span = std::max({hi_x - lo_x, hi_y - lo_y, 1.0});
-  const double size = 800.0, margin = 40.0, scale = (size - 2 * margin) / span;
-  auto sx = [&](double x) { return margin + (x - lo_x) * scale; };
-  auto sy = [&](double y) { return size - margin - (y - lo_y) * scale; };  // y up
+  const ScanView v = ScanView::fit(scan, 800.0);
+  const double size = v.size, margin = v.margin, scale = v.scale;
+  auto sx = [&](double x) { return v.px(x); };
+  auto sy = [&](double y) { return v.py(y); };
   std::ostringstream os;
   os << std::fixed << std::setprecision(2);
   os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << size << "\" height=\"" << size + 30
@@ -60,7 +46,9 @@ std::string drawScanSvg(const pcl::PointCloud<pcl::PointXYZ>& scan,
   }
   for (std::size_t k = 0; k < segments.size(); ++k) {
     const LineSegment& s = segments[k];
-    const std::string c = colour(k);
+    const std::array<int, 3> rgb = segmentColour(k);
+    const std::string c = "rgb(" + std::to_string(rgb[0]) + "," + std::to_string(rgb[1]) + "," +
+                          std::to_string(rgb[2]) + ")";
     os << "<line x1=\"" << sx(s.start.x()) << "\" y1=\"" << sy(s.start.y()) << "\" x2=\""
        << sx(s.end.x()) << "\" y2=\"" << sy(s.end.y()) << "\" stroke=\"" << c
        << "\" stroke-width=\"2.5\"/>\n";

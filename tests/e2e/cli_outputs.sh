@@ -45,6 +45,9 @@ check "scans_per_second reported" grep -q '"scans_per_second"' "$tmp/lines.json"
 check "lines on lidar01.csv with a drawing and steps" "$MM" lines \
   "$DATA/pythonrobotics_lidar01/lidar01.csv" --svg "$tmp/l.svg" --steps "$tmp/steps" --format csv
 check "the drawing is an SVG with segments" grep -q "<line" "$tmp/l.svg"
+check "lines --png writes a PNG" "$MM" lines "$mines" --preset urg04lx-mines --scan 100 \
+  --png "$tmp/l.png" --format csv
+check "the PNG has the PNG signature" bash -c "head -c 8 '$tmp/l.png' | od -An -c | grep -q 'P   N   G'"
 check "one picture per step" test "$(ls "$tmp/steps" | grep -c 'split.svg$')" -ge 3
 check "generic flags read the URG log like the preset" bash -c \
   "diff <('$MM' lines '$mines' --preset urg04lx-mines --scan 7) <('$MM' lines '$mines' --scan 7 \
