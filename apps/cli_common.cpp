@@ -18,6 +18,15 @@ const CLI::Validator kFinitePositive(
     },
     "POSITIVE");
 
+const CLI::Validator kFiniteNonNegative(
+    [](std::string& s) -> std::string {
+      double v = 0.0;
+      if (!CLI::detail::lexical_cast(s, v)) return "'" + s + "' is not a number";
+      if (!std::isfinite(v) || v < 0.0) return "must be a finite number >= 0, got " + s;
+      return std::string();
+    },
+    "NONNEGATIVE");
+
 const CLI::Validator kCount(
     [](std::string& s) -> std::string {
       if (s.empty() || s.size() > 18 || s.find_first_not_of("0123456789") != std::string::npos) {

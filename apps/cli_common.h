@@ -17,6 +17,9 @@ namespace metricmap::cli {
 /// \brief A finite number > 0 (CLI11's PositiveNumber lets NaN through).
 extern const CLI::Validator kFinitePositive;
 
+/// \brief A finite number >= 0.
+extern const CLI::Validator kFiniteNonNegative;
+
 /// \brief A whole number >= 0 written in decimal digits.
 extern const CLI::Validator kCount;
 

@@ -182,7 +182,9 @@ void addLinesCommand(CLI::App& app) {
   sub->add_option("--range-scale", f.range_scale, "Raw range x scale = metres")
       ->check(kFinitePositive)
       ->each(generic);
-  sub->add_option("--min-range", f.min_range, "Smaller ranges (m) are invalid")->each(generic);
+  sub->add_option("--min-range", f.min_range, "Smaller ranges (m) are invalid")
+      ->check(kFiniteNonNegative)
+      ->each(generic);
   sub->add_option("--max-range", f.max_range, "Larger ranges (m) are invalid")->each(generic);
   auto* scan = sub->add_option("--scan", o->scan, "Scan to segment (0-based)")->check(kCount);
   sub->add_flag("--all", o->all, "Segment every scan")->excludes(scan);
@@ -190,16 +192,16 @@ void addLinesCommand(CLI::App& app) {
       ->check(kFinitePositive)
       ->capture_default_str();
   sub->add_option("--angle-threshold-deg", o->angle_deg, "a_th: merge angle, degrees (0: no merge)")
-      ->check(CLI::Range(0.0, 180.0))
+      ->check(kFiniteNonNegative & CLI::Range(0.0, 180.0))
       ->capture_default_str();
   sub->add_option("--min-points", o->min_points, "Purge segments with fewer points (0: off)")
       ->check(kCount)
       ->capture_default_str();
   sub->add_option("--min-length", o->min_length, "Purge shorter segments, metres (0: off)")
-      ->check(CLI::Range(0.0, 1e9))
+      ->check(kFiniteNonNegative)
       ->capture_default_str();
   sub->add_option("--max-gap", o->max_gap, "Split where neighbours are further apart (0: off)")
-      ->check(CLI::Range(0.0, 1e9))
+      ->check(kFiniteNonNegative)
       ->capture_default_str();
   sub->add_option("--purge", o->purge, "When purge runs")
       ->check(CLI::IsMember({"before-merge", "after-merge"}))
@@ -208,10 +210,10 @@ void addLinesCommand(CLI::App& app) {
                   "Split on d^2/var(d) > this (chi-square, 1 dof) instead of --distance-threshold")
       ->check(kFinitePositive);
   sub->add_option("--range-sigma", o->range_sigma, "Range noise, metres")
-      ->check(CLI::Range(0.0, 1e3))
+      ->check(kFiniteNonNegative)
       ->capture_default_str();
   sub->add_option("--bearing-sigma-deg", o->bearing_sigma_deg, "Bearing noise, degrees")
-      ->check(CLI::Range(0.0, 180.0))
+      ->check(kFiniteNonNegative & CLI::Range(0.0, 180.0))
       ->capture_default_str();
   addFormatOption(*sub, o->format, {"table", "csv", "json"});
   sub->add_option("--svg", o->svg, "Draw the scan and its segments (not with --all)")

@@ -68,6 +68,10 @@ for v in 0 -0.1 nan abc; do
   expect 2 "--distance-threshold" -- "$MM" lines "$mines" --preset urg04lx-mines --distance-threshold "$v"
 done
 expect 2 "--angle-threshold-deg" -- "$MM" lines "$mines" --preset urg04lx-mines --angle-threshold-deg -1
+expect 2 "--angle-threshold-deg" -- "$MM" lines "$mines" --preset urg04lx-mines --angle-threshold-deg nan
+expect 2 "--max-gap" -- "$MM" lines "$mines" --preset urg04lx-mines --max-gap inf
+expect 2 "--chi2" -- "$MM" lines "$mines" --preset urg04lx-mines --chi2 0
+expect 1 "--max-range" -- "$MM" lines "$mines" --count 10 --min-range 2 --max-range 1
 expect 2 "--min-points" -- "$MM" lines "$mines" --preset urg04lx-mines --min-points -2
 expect 2 "--svg" -- "$MM" lines "$mines" --preset urg04lx-mines --all --svg "$tmp/x.svg"
 expect 2 "--preset" -- "$MM" lines "$mines" --preset sick
