@@ -1,0 +1,71 @@
+#include "metricmap/height/depth_to_cloud.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace metricmap {
+namespace {
+
+void check(const DepthImage& depth, const CameraIntrinsics& k, double depth_scale) {
+  validateIntrinsics(k);
+  if (!std::isfinite(depth_scale) || !(depth_scale > 0.0)) {
+    throw std::invalid_argument("depth scale must be a finite number > 0, got " +
+                                std::to_string(depth_scale));
+  }
+  if (depth.width <= 0 || depth.height <= 0) throw std::invalid_argument("empty depth image");
+}
+
+template <typename PointT, typename Fill>
+pcl::PointCloud<PointT> project(const DepthImage& depth, const CameraIntrinsics& k,
+                                double depth_scale, Fill fill) {
+  check(depth, k, depth_scale);
+  pcl::PointCloud<PointT> cloud(static_cast<std::uint32_t>(depth.width),
+                                static_cast<std::uint32_t>(depth.height));
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  bool dense = true;
+  for (int v = 0; v < depth.height; ++v) {
+    for (int u = 0; u < depth.width; ++u) {
+      PointT& p = cloud.at(u, v);
+      const std::uint16_t d = depth.at(u, v);
+      fill(p, u, v);
+      if (d == 0) {
+        p.x = p.y = p.z = nan;
+        dense = false;
+        continue;
+      }
+      const double z = d * depth_scale;
+      p.x = static_cast<float>((u - k.cx) * z / k.fx);
+      p.y = static_cast<float>((v - k.cy) * z / k.fy);
+      p.z = static_cast<float>(z);
+    }
+  }
+  cloud.is_dense = dense;
+  return cloud;
+}
+
+}  // namespace
+
+pcl::PointCloud<pcl::PointXYZ> depthToCloud(const DepthImage& depth, const CameraIntrinsics& k,
+                                            double depth_scale) {
+  return project<pcl::PointXYZ>(depth, k, depth_scale, [](pcl::PointXYZ&, int, int) {});
+}
+
+pcl::PointCloud<pcl::PointXYZRGB> depthToCloud(const DepthImage& depth, const CameraIntrinsics& k,
+                                               double depth_scale, const RgbImage& rgb) {
+  if (rgb.width != depth.width || rgb.height != depth.height) {
+    throw std::invalid_argument("RGB image is " + std::to_string(rgb.width) + "x" +
+                                std::to_string(rgb.height) + ", depth image " +
+                                std::to_string(depth.width) + "x" + std::to_string(depth.height));
+  }
+  return project<pcl::PointXYZRGB>(depth, k, depth_scale, [&](pcl::PointXYZRGB& p, int u, int v) {
+    const std::size_t i = (static_cast<std::size_t>(v) * rgb.width + u) * 3;
+    p.r = rgb.rgb[i];
+    p.g = rgb.rgb[i + 1];
+    p.b = rgb.rgb[i + 2];
+    p.a = 255;
+  });
+}
+
+}  // namespace metricmap
