@@ -11,5 +11,7 @@ void addGridCommand(CLI::App& app);
 void addOctreeCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
 void addLinesCommand(CLI::App& app);
+void addDepthToCloudCommand(CLI::App& app);
+void addHeightMapCommand(CLI::App& app);
 
 }  // namespace metricmap::cli

@@ -1,0 +1,235 @@
+// metricmap heightmap DEPTH...: height-binned top-down map (obstacles, explored, layers, counts).
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "camera_options.h"
+#include "cli_common.h"
+#include "commands.h"
+#include "metricmap/exceptions.h"
+#include "metricmap/height/depth_to_cloud.h"
+#include "metricmap/height/floor_fit.h"
+#include "metricmap/height/height_map.h"
+#include "metricmap/io/array_writers.h"
+#include "table.h"
+
+namespace metricmap::cli {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+struct HeightMapOptions {
+  std::vector<std::string> depths;
+  CameraOptions camera;
+  double camera_height = NAN, pitch_deg = 0.0, yaw_deg = 0.0;
+  std::string pose_matrix, trajectory, out_prefix, format = "json";
+  bool auto_floor = false;
+  double resolution = 0.05, floor_distance = 0.02;
+  long long map_size = 0, obstacle_threshold = 1;
+  std::vector<double> z_bins;
+};
+
+std::vector<double> parseNumbers(const std::string& text, const std::string& what) {
+  std::vector<double> v;
+  std::istringstream is(text);
+  for (std::string item; std::getline(is, item, ',');) {
+    char* end = nullptr;
+    const double x = std::strtod(item.c_str(), &end);
+    if (item.empty() || *end != '\0' || !std::isfinite(x)) {
+      throw std::invalid_argument(what + ": '" + item + "' is not a finite number");
+    }
+    v.push_back(x);
+  }
+  return v;
+}
+
+Eigen::Isometry3d poseFromMatrix(const std::string& text) {
+  const std::vector<double> m = parseNumbers(text, "--pose-matrix");
+  if (m.size() != 16) throw std::invalid_argument("--pose-matrix needs 16 numbers (row-major 4x4)");
+  Eigen::Matrix4d t;
+  for (int i = 0; i < 16; ++i) t(i / 4, i % 4) = m[static_cast<std::size_t>(i)];
+  Eigen::Isometry3d pose;
+  pose.matrix() = t;
+  return pose;
+}
+
+/// TUM trajectory: "timestamp tx ty tz qx qy qz qw", camera -> world; frame k takes line k.
+std::vector<Eigen::Isometry3d> readTrajectory(const std::string& path, std::size_t frames) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open");
+  std::vector<Eigen::Isometry3d> poses;
+  std::string line;
+  for (std::size_t n = 1; std::getline(in, line) && poses.size() < frames; ++n) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream is(line);
+    double v[8];
+    for (double& x : v) {
+      if (!(is >> x) || !std::isfinite(x)) {
+        throw InputError(path + ": line " + std::to_string(n) +
+                         " is not 'timestamp tx ty tz qx qy qz qw'");
+      }
+    }
+    Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
+    if (q.norm() < 1e-9)
+      throw InputError(path + ": line " + std::to_string(n) + ": zero quaternion");
+    Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+    t.linear() = q.normalized().toRotationMatrix();
+    t.translation() = Eigen::Vector3d(v[1], v[2], v[3]);
+    poses.push_back(t);
+  }
+  if (poses.size() < frames) {
+    throw InputError(path + ": " + std::to_string(poses.size()) + " pose(s) for " +
+                     std::to_string(frames) + " frame(s)");
+  }
+  return poses;
+}
+
+std::vector<std::uint8_t> layerColour(std::size_t bin, std::size_t bins) {
+  // Low bins blue, middle (obstacles) red, high bins green-yellow.
+  static const std::uint8_t palette[][3] = {{70, 110, 220}, {220, 50, 40},  {240, 200, 40},
+                                            {60, 180, 90},  {160, 90, 200}, {90, 200, 220}};
+  const std::uint8_t* c = palette[bin % 6];
+  (void)bins;
+  return {c[0], c[1], c[2]};
+}
+
+void writeImages(const HeightMap& map, const std::string& prefix) {
+  const int n = static_cast<int>(map.size());
+  std::vector<std::uint8_t> obstacles(static_cast<std::size_t>(n) * n), explored(obstacles.size()),
+      layers(obstacles.size() * 3, 0);
+  for (std::size_t r = 0; r < map.size(); ++r) {
+    for (std::size_t c = 0; c < map.size(); ++c) {
+      const std::size_t i = r * map.size() + c;
+      obstacles[i] = map.obstacle(r, c) ? 0 : 255;
+      explored[i] = map.explored(r, c) ? 255 : 0;
+      std::size_t best = 0;
+      std::uint32_t most = 0;
+      for (std::size_t b = 0; b < map.bins(); ++b) {
+        if (map.count(r, c, b) > most) {
+          most = map.count(r, c, b);
+          best = b;
+        }
+      }
+      if (most > 0) {
+        const auto rgb = layerColour(best, map.bins());
+        std::copy(rgb.begin(), rgb.end(), layers.begin() + static_cast<std::ptrdiff_t>(3 * i));
+      }
+    }
+  }
+  writePng(prefix + "_obstacles.png", n, n, 1, obstacles);
+  writePng(prefix + "_explored.png", n, n, 1, explored);
+  writePng(prefix + "_layers.png", n, n, 3, layers);
+  writeNpyUint32(prefix + "_counts.npy", {map.size(), map.size(), map.bins()}, map.counts());
+}
+
+void run(const HeightMapOptions& o) {
+  const int sources = (!std::isnan(o.camera_height) ? 1 : 0) + (!o.pose_matrix.empty() ? 1 : 0) +
+                      (!o.trajectory.empty() ? 1 : 0) + (o.auto_floor ? 1 : 0);
+  if (sources != 1) {
+    throw CLI::ValidationError("pose",
+                               "give exactly one of --camera-height (with --pitch-deg, "
+                               "--yaw-deg), --pose-matrix, --trajectory, --auto-floor");
+  }
+  HeightMapParams params;
+  params.resolution = o.resolution;
+  params.map_size = static_cast<std::size_t>(o.map_size);
+  params.z_bins = o.z_bins;
+  params.obstacle_threshold = static_cast<std::uint32_t>(o.obstacle_threshold);
+  HeightMap map(params);  // checks sizes and bins before any file is read
+
+  std::vector<Eigen::Isometry3d> trajectory;
+  if (!o.trajectory.empty()) trajectory = readTrajectory(o.trajectory, o.depths.size());
+  nlohmann::json floors = nlohmann::json::array();
+  double seconds = 0.0;
+  for (std::size_t f = 0; f < o.depths.size(); ++f) {
+    const DepthImage depth = readDepthImage(o.depths[f]);
+    const CameraIntrinsics k = resolveIntrinsics(o.camera, depth);
+    const auto cloud = depthToCloud(depth, k, resolveDepthScale(o.camera, k, depth));
+    Eigen::Isometry3d pose;
+    if (o.auto_floor) {
+      const FloorPlane floor = fitFloor(cloud, o.floor_distance);
+      pose = cameraToMapFromFloor(floor.normal, floor.d);
+      floors.push_back({{"frame", f},
+                        {"plane", {floor.normal.x(), floor.normal.y(), floor.normal.z(), floor.d}},
+                        {"camera_height", floor.cameraHeight()},
+                        {"inliers", floor.inliers}});
+    } else if (!trajectory.empty()) {
+      pose = trajectory[f];
+    } else if (!o.pose_matrix.empty()) {
+      pose = poseFromMatrix(o.pose_matrix);
+    } else {
+      pose = cameraToMap(o.camera_height, o.pitch_deg * kDeg, o.yaw_deg * kDeg);
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    map.addFrame(cloud, pose);
+    seconds += secondsSince(t0);
+  }
+  writeImages(map, o.out_prefix);
+
+  const HeightMapStatistics& s = map.statistics();
+  nlohmann::json j = {{"frames", s.frames},
+                      {"map_size", map.size()},
+                      {"resolution", params.resolution},
+                      {"z_bins", params.z_bins},
+                      {"bin_counts", s.bin_counts},
+                      {"points_outside_map", s.points_outside_map},
+                      {"valid_pixels", s.valid_points},
+                      {"obstacle_cells", map.obstacleCells()},
+                      {"explored_cells", map.exploredCells()},
+                      {"floor", floors.empty() ? nlohmann::json(nullptr) : floors.front()},
+                      {"seconds", seconds}};
+  if (floors.size() > 1) j["floors"] = floors;
+  if (o.format == "json") {
+    emit(j.dump(2) + "\n", "");
+    return;
+  }
+  Table t(
+      {"frames", "valid_pixels", "outside_map", "obstacle_cells", "explored_cells", "bin_counts"});
+  std::string bins;
+  for (auto b : s.bin_counts) bins += (bins.empty() ? "" : " ") + std::to_string(b);
+  t.addRow({std::to_string(s.frames), std::to_string(s.valid_points),
+            std::to_string(s.points_outside_map), std::to_string(map.obstacleCells()),
+            std::to_string(map.exploredCells()), bins});
+  emitTable(t, o.format);
+}
+
+}  // namespace
+
+void addHeightMapCommand(CLI::App& app) {
+  auto o = std::make_shared<HeightMapOptions>();
+  CLI::App* sub = app.add_subcommand("heightmap", "Height-binned top-down map from depth images");
+  sub->add_option("depth", o->depths, "16-bit depth images; every frame adds to the map")
+      ->required();
+  addCameraOptions(*sub, o->camera);
+  sub->add_option("--camera-height", o->camera_height, "Camera height above the floor, metres")
+      ->check(kFiniteNonNegative);
+  sub->add_option("--pitch-deg", o->pitch_deg, "Camera pitch, degrees (positive: looking down)")
+      ->check(CLI::Range(-90.0, 90.0));
+  sub->add_option("--yaw-deg", o->yaw_deg, "Camera yaw, degrees")->check(CLI::Range(-360.0, 360.0));
+  sub->add_option("--pose-matrix", o->pose_matrix, "Camera-to-map 4x4, 16 numbers row-major");
+  sub->add_option("--trajectory", o->trajectory,
+                  "TUM trajectory (timestamp tx ty tz qx qy qz qw), one line per frame, in order");
+  sub->add_flag("--auto-floor", o->auto_floor,
+                "Fit the floor (pcl::SACSegmentation) and measure heights from it");
+  sub->add_option("--resolution", o->resolution, "Cell edge, metres")
+      ->required()
+      ->check(kFinitePositive);
+  sub->add_option("--map-size", o->map_size, "Cells per side")->required()->check(kCount);
+  sub->add_option("--z-bins", o->z_bins, "Height bin edges a,b[,...] (strictly increasing)")
+      ->required()
+      ->delimiter(',');
+  sub->add_option("--obstacle-threshold", o->obstacle_threshold,
+                  "Middle-bin count that marks an obstacle")
+      ->check(kCount)
+      ->capture_default_str();
+  sub->add_option("--out-prefix", o->out_prefix,
+                  "Writes PREFIX_obstacles.png, _explored.png, _layers.png, _counts.npy")
+      ->required();
+  addFormatOption(*sub, o->format, {"json", "table"});
+  sub->callback([o] { run(*o); });
+}
+
+}  // namespace metricmap::cli

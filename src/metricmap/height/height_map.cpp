@@ -1,0 +1,114 @@
+#include "metricmap/height/height_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "metricmap/common/fast_floor.h"
+#include "metricmap/exceptions.h"
+
+namespace metricmap {
+
+HeightMap::HeightMap(const HeightMapParams& params) : params_(params) {
+  if (!std::isfinite(params.resolution) || !(params.resolution > 0.0)) {
+    throw std::invalid_argument("resolution must be a finite number > 0");
+  }
+  if (params.map_size == 0) throw std::invalid_argument("map size must be > 0");
+  if (params.z_bins.empty()) throw std::invalid_argument("z bins need at least one edge");
+  for (std::size_t i = 0; i < params.z_bins.size(); ++i) {
+    if (!std::isfinite(params.z_bins[i]) || (i > 0 && !(params.z_bins[i] > params.z_bins[i - 1]))) {
+      throw std::invalid_argument("z bins must be finite and strictly increasing");
+    }
+  }
+  const long double cells = static_cast<long double>(params.map_size) * params.map_size * bins();
+  const long double bytes = cells * sizeof(std::uint32_t);
+  if (bytes > static_cast<long double>(params.max_bytes)) {
+    std::ostringstream os;
+    os << "a " << params.map_size << " x " << params.map_size << " map with " << bins()
+       << " height bins needs " << static_cast<double>(bytes) / (1 << 20) << " MiB (limit "
+       << params.max_bytes / (1 << 20) << " MiB)";
+    throw CapacityError(os.str());
+  }
+  counts_.assign(static_cast<std::size_t>(cells), 0);
+  stats_.bin_counts.assign(bins(), 0);
+}
+
+void HeightMap::addFrame(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                         const Eigen::Isometry3d& to_map) {
+  const Eigen::Matrix3f r = to_map.linear().cast<float>();
+  const Eigen::Vector3f t = to_map.translation().cast<float>();
+  const auto n = static_cast<std::int64_t>(params_.map_size);
+  const double inv = 1.0 / params_.resolution;
+  const std::vector<double>& edges = params_.z_bins;
+  const std::size_t nb = bins();
+  for (const pcl::PointXYZ& p : cloud) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
+    ++stats_.valid_points;
+    const Eigen::Vector3f q = r * p.getVector3fMap() + t;
+    const std::int64_t col = floorToInt(q.x() * inv) + n / 2;
+    const std::int64_t row = n / 2 - 1 - floorToInt(q.y() * inv);
+    if (col < 0 || col >= n || row < 0 || row >= n) {
+      ++stats_.points_outside_map;
+      continue;
+    }
+    // np.digitize(z, edges): the number of edges <= z.
+    const auto bin = static_cast<std::size_t>(
+        std::upper_bound(edges.begin(), edges.end(), static_cast<double>(q.z())) - edges.begin());
+    ++counts_[(static_cast<std::size_t>(row) * params_.map_size + static_cast<std::size_t>(col)) *
+                  nb +
+              bin];
+    ++stats_.bin_counts[bin];
+  }
+  ++stats_.frames;
+}
+
+bool HeightMap::explored(std::size_t row, std::size_t col) const {
+  for (std::size_t b = 0; b < bins(); ++b) {
+    if (count(row, col, b) > 0) return true;
+  }
+  return false;
+}
+
+std::size_t HeightMap::obstacleCells() const {
+  std::size_t n = 0;
+  for (std::size_t r = 0; r < size(); ++r) {
+    for (std::size_t c = 0; c < size(); ++c) n += obstacle(r, c) ? 1 : 0;
+  }
+  return n;
+}
+
+std::size_t HeightMap::exploredCells() const {
+  std::size_t n = 0;
+  for (std::size_t r = 0; r < size(); ++r) {
+    for (std::size_t c = 0; c < size(); ++c) n += explored(r, c) ? 1 : 0;
+  }
+  return n;
+}
+
+Eigen::Isometry3d cameraToMap(double height, double pitch_rad, double yaw_rad) {
+  Eigen::Matrix3d level;  // optical (x right, y down, z forward) -> map (x right, y forward, z up)
+  level << 1, 0, 0, 0, 0, 1, 0, -1, 0;
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.linear() = Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()).toRotationMatrix() *
+               Eigen::AngleAxisd(-pitch_rad, Eigen::Vector3d::UnitX()).toRotationMatrix() * level;
+  t.translation() = Eigen::Vector3d(0, 0, height);
+  return t;
+}
+
+Eigen::Isometry3d cameraToMapFromFloor(const Eigen::Vector3d& n, double d) {
+  const Eigen::Vector3d z = n.normalized();
+  Eigen::Vector3d y = Eigen::Vector3d::UnitZ() - Eigen::Vector3d::UnitZ().dot(z) * z;
+  if (y.norm() < 1e-6)
+    throw std::invalid_argument("camera looks straight at the floor: no forward");
+  y.normalize();
+  const Eigen::Vector3d x = y.cross(z);
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.linear().row(0) = x.transpose();
+  t.linear().row(1) = y.transpose();
+  t.linear().row(2) = z.transpose();
+  t.translation() = Eigen::Vector3d(0, 0, d / n.norm());
+  return t;
+}
+
+}  // namespace metricmap

@@ -1,0 +1,66 @@
+#include "metricmap/io/array_writers.h"
+
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+#include <unistd.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+
+#include "metricmap/io/cloud_writer.h"
+
+namespace metricmap {
+
+void writePng(const std::string& path, int width, int height, int channels,
+              const std::vector<std::uint8_t>& pixels) {
+  if (pixels.size() != static_cast<std::size_t>(width) * height * channels) {
+    throw std::invalid_argument(path + ": pixel buffer does not match the image size");
+  }
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, channels);
+  auto* dst = static_cast<std::uint8_t*>(image->GetScalarPointer());
+  const std::size_t row_bytes = static_cast<std::size_t>(width) * channels;
+  for (int v = 0; v < height; ++v) {  // VTK's row 0 is the bottom
+    std::memcpy(dst + static_cast<std::size_t>(height - 1 - v) * row_bytes,
+                pixels.data() + static_cast<std::size_t>(v) * row_bytes, row_bytes);
+  }
+  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(tmp.c_str());
+  writer->SetInputData(image);
+  writer->Write();
+  if (writer->GetErrorCode() != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error(path + ": cannot write PNG");
+  }
+}
+
+void writeNpyUint32(const std::string& path, const std::vector<std::size_t>& shape,
+                    const std::vector<std::uint32_t>& data) {
+  std::string dims;
+  std::size_t n = 1;
+  for (std::size_t s : shape) {
+    dims += std::to_string(s) + ", ";
+    n *= s;
+  }
+  if (shape.size() > 1) dims.erase(dims.size() - 2);  // (a, b, c) but (a,) for one axis
+  if (n != data.size()) throw std::invalid_argument(path + ": shape does not match the data");
+  std::string header = "{'descr': '<u4', 'fortran_order': False, 'shape': (" + dims + "), }";
+  // Magic (6) + version (2) + header length (2) + header, padded with spaces to 64 bytes, '\n'.
+  const std::size_t total = 10 + header.size() + 1;
+  header.append((64 - total % 64) % 64, ' ');
+  header += '\n';
+  std::string out = "\x93NUMPY";
+  out += '\x01';
+  out += '\x00';
+  out += static_cast<char>(header.size() & 0xFF);
+  out += static_cast<char>((header.size() >> 8) & 0xFF);
+  out += header;
+  out.append(reinterpret_cast<const char*>(data.data()), data.size() * sizeof(std::uint32_t));
+  writeTextAtomic(path, out);
+}
+
+}  // namespace metricmap
