@@ -217,7 +217,9 @@ void addHeightMapCommand(CLI::App& app) {
   sub->add_option("--resolution", o->resolution, "Cell edge, metres")
       ->required()
       ->check(kFinitePositive);
-  sub->add_option("--map-size", o->map_size, "Cells per side")->required()->check(kCount);
+  sub->add_option("--map-size", o->map_size, "Cells per side")
+      ->required()
+      ->check(kCount & kFinitePositive);
   sub->add_option("--z-bins", o->z_bins, "Height bin edges a,b[,...] (strictly increasing)")
       ->required()
       ->delimiter(',');

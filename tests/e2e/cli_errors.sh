@@ -76,6 +76,31 @@ expect 2 "--min-points" -- "$MM" lines "$mines" --preset urg04lx-mines --min-poi
 expect 2 "--svg" -- "$MM" lines "$mines" --preset urg04lx-mines --all --svg "$tmp/x.svg"
 expect 2 "--preset" -- "$MM" lines "$mines" --preset sick
 
+# depth-to-cloud and heightmap.
+K=$DATA/pcl_grabber_kinect_depth
+kd=$K/tiff/frame_20121214T142255.814212_depth.tiff
+kx=$K/xml/frame_20121214T142255.814212.xml
+tum=$DATA/open3d_tum_depth
+expect 1 "must be 16-bit" -- "$MM" depth-to-cloud "$tum/TUM_color.png" --intrinsics 525,525,319.5,239.5 --out "$tmp/c.pcd"
+expect 1 "must be 16-bit" -- "$MM" depth-to-cloud "$K/tiff/frame_20121214T142255.814212_rgb.tiff" --camera "$kx" --out "$tmp/c.pcd"
+check "no cloud written for a colour image" test ! -e "$tmp/c.pcd"
+expect 2 "intrinsics" -- "$MM" depth-to-cloud "$kd" --out "$tmp/c.pcd"
+expect 2 "--depth-scale" -- "$MM" depth-to-cloud "$kd" --camera "$kx" --depth-scale 0 --out "$tmp/c.pcd"
+expect 2 "--depth-scale" -- "$MM" depth-to-cloud "$kd" --camera "$kx" --depth-scale -1 --out "$tmp/c.pcd"
+expect 1 "RGB image" -- "$MM" depth-to-cloud "$kd" --rgb "$tum/TUM_depth.png" --camera "$kx" --out "$tmp/c.pcd"
+expect 1 "$tmp/missing.png" -- "$MM" depth-to-cloud "$tmp/missing.png" --camera "$kx" --out "$tmp/c.pcd"
+hm=(--resolution 0.05 --map-size 100 --z-bins 0.1,1.0 --out-prefix "$tmp/hm")
+expect 2 "--map-size" -- "$MM" heightmap "$kd" --camera "$kx" --auto-floor --resolution 0.05 --map-size 0 --z-bins 0.1,1 --out-prefix "$tmp/hm"
+expect 1 "MiB" -- "$MM" heightmap "$kd" --camera "$kx" --auto-floor --resolution 0.05 --map-size 200000 --z-bins 0.1,1 --out-prefix "$tmp/hm"
+expect 1 "strictly increasing" -- "$MM" heightmap "$kd" --camera "$kx" --auto-floor --resolution 0.05 --map-size 100 --z-bins 1,0.1 --out-prefix "$tmp/hm"
+expect 2 "exactly one" -- "$MM" heightmap "$kd" --camera "$kx" "${hm[@]}"
+expect 2 "exactly one" -- "$MM" heightmap "$kd" --camera "$kx" --auto-floor --camera-height 1 "${hm[@]}"
+printf '1.0 0 0 0 0 0 0 1\n' >"$tmp/traj.txt"
+expect 1 "1 pose(s) for 2 frame(s)" -- "$MM" heightmap "$kd" "$kd" --camera "$kx" --trajectory "$tmp/traj.txt" "${hm[@]}"
+printf '1.0 0 0 nan 0 0 0 1\n' >"$tmp/nan_traj.txt"
+expect 1 "$tmp/nan_traj.txt" -- "$MM" heightmap "$kd" --camera "$kx" --trajectory "$tmp/nan_traj.txt" "${hm[@]}"
+check "no map written after bad input" test ! -e "$tmp/hm_obstacles.png"
+
 # Output errors: exit 1, nothing half-written.
 expect 1 "$tmp/nodir/means.pcd" -- "$MM" grid "$scan" --cell-size 1 --out "$tmp/nodir/means.pcd"
 expect 1 "$tmp/nodir/cells.csv" -- "$MM" grid "$scan" --cell-size 1 --cells "$tmp/nodir/cells.csv"

@@ -53,4 +53,20 @@ check "generic flags read the URG log like the preset" bash -c \
   "diff <('$MM' lines '$mines' --preset urg04lx-mines --scan 7) <('$MM' lines '$mines' --scan 7 \
    --skip-tokens 24 --count 682 --angle-min-deg -120 --angle-increment-deg 0.35242290748898675 \
    --range-scale 0.001 --min-range 0.02)"
+tum=$DATA/open3d_tum_depth
+check "heightmap runs end to end on the TUM frame" bash -c "'$MM' heightmap '$tum/TUM_depth.png' \
+  --camera '$tum/camera_primesense.json' --auto-floor --resolution 0.05 --map-size 200 \
+  --z-bins 0.1,1.0 --out-prefix '$tmp/tum' >'$tmp/tum.json'"
+for f in obstacles explored layers; do
+  check "heightmap wrote $f.png" bash -c "head -c 8 '$tmp/tum_$f.png' | od -An -c | grep -q 'P   N   G'"
+done
+check "counts.npy is a NumPy file with the map's shape" bash -c \
+  "head -c 128 '$tmp/tum_counts.npy' | grep -aq \"'shape': (200, 200, 3)\""
+check "the npy holds 200*200*3 uint32 after its 128-byte header" \
+  test "$(stat -c %s "$tmp/tum_counts.npy")" = $((128 + 200 * 200 * 3 * 4))
+check "heightmap accounts for every valid pixel" bash -c "python3 -c 1 2>/dev/null; \
+  awk '/bin_counts/{f=1;next} f&&/]/{f=0} f{gsub(/,/,\"\");s+=\$1} /points_outside_map/{gsub(/,/,\"\");o=\$2} /valid_pixels/{gsub(/,/,\"\");v=\$2} END{exit !(s+o==v && v>0)}' '$tmp/tum.json'"
+check "explicit pose works" "$MM" heightmap "$tum/TUM_depth.png" --camera "$tum/camera_primesense.json" \
+  --camera-height 1.2 --pitch-deg 20 --resolution 0.05 --map-size 200 --z-bins 0.1,1.0 \
+  --out-prefix "$tmp/tum2" --format table
 finish
