@@ -9,7 +9,8 @@ cmake -S . -B build/bench -DCMAKE_BUILD_TYPE=Release -DMETRICMAP_BUILD_BENCH=ON 
 cmake --build build/bench -j "${JOBS:-2}" --target metricmap_bench >/dev/null
 for b in BM_DataOnly BM_OccupancyGrid BM_OccupancyGridFresh BM_PclVoxelGrid \
          BM_AdaptiveOctree BM_AdaptiveOctreeFresh BM_PclOctreeDynamicDepth \
-         BM_SplitAndMergeUrg BM_SequentialRansacUrg; do
+         BM_SplitAndMergeUrg BM_SequentialRansacUrg BM_HeightMapKinectFrame \
+         BM_DepthToCloudKinectFrame; do
   build/bench/bench/metricmap_bench --benchmark_filter="^$b(/|\$)" --benchmark_repetitions=3 \
     --benchmark_report_aggregates_only=true "$@" 2>/dev/null | grep -E "_median|^BM_DataOnly"
 done
