@@ -4,6 +4,12 @@
 
 #include "metricmap/exceptions.h"
 #include "metricmap/grid/occupancy_grid.h"
+#include "metricmap/height/depth_to_cloud.h"
+#include "metricmap/height/floor_fit.h"
+#include "metricmap/height/height_map.h"
+#include "metricmap/io/array_writers.h"
+#include "metricmap/io/camera_intrinsics.h"
+#include "metricmap/io/depth_image.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/laser_scan.h"
