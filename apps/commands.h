@@ -13,5 +13,6 @@ void addCompareCommand(CLI::App& app);
 void addLinesCommand(CLI::App& app);
 void addDepthToCloudCommand(CLI::App& app);
 void addHeightMapCommand(CLI::App& app);
+void addKittiCommand(CLI::App& app);
 
 }  // namespace metricmap::cli

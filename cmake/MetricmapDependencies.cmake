@@ -1,7 +1,8 @@
 # PCL's io component pulls in VTK; keep the component list short for configure speed.
-find_package(PCL 1.12 REQUIRED COMPONENTS common io filters octree sample_consensus segmentation)
+find_package(PCL 1.12 REQUIRED COMPONENTS common io filters octree sample_consensus segmentation kdtree)
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(nlohmann_json 3.2 REQUIRED)
+find_package(yaml-cpp REQUIRED)
 if(METRICMAP_BUILD_APPS)
   find_package(CLI11 REQUIRED)
 endif()

@@ -8,13 +8,17 @@
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
+#include <vtkPNMWriter.h>
 
 #include "metricmap/io/cloud_writer.h"
 
 namespace metricmap {
 
-void writePng(const std::string& path, int width, int height, int channels,
-              const std::vector<std::uint8_t>& pixels) {
+namespace {
+
+template <typename Writer>
+void writeImage(const std::string& path, int width, int height, int channels,
+                const std::vector<std::uint8_t>& pixels) {
   if (pixels.size() != static_cast<std::size_t>(width) * height * channels) {
     throw std::invalid_argument(path + ": pixel buffer does not match the image size");
   }
@@ -28,14 +32,25 @@ void writePng(const std::string& path, int width, int height, int channels,
                 pixels.data() + static_cast<std::size_t>(v) * row_bytes, row_bytes);
   }
   const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
-  vtkNew<vtkPNGWriter> writer;
+  vtkNew<Writer> writer;
   writer->SetFileName(tmp.c_str());
   writer->SetInputData(image);
   writer->Write();
   if (writer->GetErrorCode() != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
     std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": cannot write PNG");
+    throw std::runtime_error(path + ": cannot write image");
   }
+}
+
+}  // namespace
+
+void writePng(const std::string& path, int width, int height, int channels,
+              const std::vector<std::uint8_t>& pixels) {
+  writeImage<vtkPNGWriter>(path, width, height, channels, pixels);
+}
+
+void writePgm(const std::string& path, int width, int height, const std::vector<std::uint8_t>& grey) {
+  writeImage<vtkPNMWriter>(path, width, height, 1, grey);
 }
 
 void writeNpyUint32(const std::string& path, const std::vector<std::size_t>& shape,

@@ -1,0 +1,210 @@
+// metricmap kitti ROOT --sequence NN: scans + poses -> global cloud and a 2D occupancy map.
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+
+#include <unistd.h>
+
+#include <pcl/common/transforms.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_common.h"
+#include "commands.h"
+#include "metricmap/exceptions.h"
+#include "metricmap/grid/occupancy_grid.h"
+#include "metricmap/io/cloud_reader.h"
+#include "metricmap/io/cloud_writer.h"
+#include "metricmap/kitti/kitti_sequence.h"
+#include "metricmap/kitti/occupancy_map_2d.h"
+#include "table.h"
+
+namespace metricmap::cli {
+namespace {
+
+using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+
+struct KittiOptions {
+  std::string root, sequence = "00", frames, world = "camera", out_cloud, out_map;
+  std::string pcd_format = "binary", map_plane = "xz", format = "table";
+  long long first = -1, count = 0, min_hits = 1;
+  double min_range = 0.0, max_range = std::numeric_limits<double>::infinity();
+  double min_height = -std::numeric_limits<double>::infinity();
+  double max_height = std::numeric_limits<double>::infinity();
+  double voxel = 0.0, map_resolution = 0.1;
+};
+
+std::vector<std::size_t> selectFrames(const KittiOptions& o) {
+  if (!o.frames.empty() && o.first >= 0) {
+    throw CLI::ValidationError("frames", "give --frames or --first/--count, not both");
+  }
+  if (!o.frames.empty()) return parseFrameList(o.frames);
+  if (o.first < 0 || o.count <= 0) {
+    throw CLI::ValidationError("frames", "give --frames LIST or --first F --count N (N > 0)");
+  }
+  std::vector<std::size_t> f;
+  for (long long i = 0; i < o.count; ++i) f.push_back(static_cast<std::size_t>(o.first + i));
+  return f;
+}
+
+Cloud voxelize(const Cloud::Ptr& cloud, double voxel) {
+  OccupancyGrid<pcl::PointXYZ> grid;
+  grid.setOrigin(GridOrigin::WorldAligned);
+  grid.setCellSize(static_cast<float>(voxel));
+  grid.setInputCloud(cloud);
+  Cloud out;
+  grid.filter(out);
+  return out;
+}
+
+void run(const KittiOptions& o) {
+  const auto t_start = std::chrono::steady_clock::now();
+  const std::vector<std::size_t> frames = selectFrames(o);
+  const KittiSequence seq{o.root, o.sequence};
+  const Eigen::Isometry3d tr = readKittiCalibTr(seq.calib());
+  const std::size_t last = *std::max_element(frames.begin(), frames.end());
+  const std::vector<Eigen::Isometry3d> poses = readKittiPoses(seq.poses(), last + 1);
+  for (std::size_t f : frames) {  // every scan must exist before any work is done
+    if (access(seq.scan(f).c_str(), R_OK) != 0) throw InputError(seq.scan(f) + ": missing frame");
+  }
+  const KittiWorld world = o.world == "velodyne" ? KittiWorld::Velodyne : KittiWorld::Camera;
+  // The world's up axis: -y for KITTI's camera frame, z for the velodyne frame.
+  const Eigen::Vector3f up =
+      world == KittiWorld::Camera ? Eigen::Vector3f(0, -1, 0) : Eigen::Vector3f(0, 0, 1);
+  OccupancyMap2D map(o.map_resolution, parseMapPlane(o.map_plane));
+  auto global = std::make_shared<Cloud>();
+  std::uint64_t read = 0, kept = 0, mapped = 0;
+  double load_s = 0, transform_s = 0, map_s = 0;
+  const bool progress = isatty(STDERR_FILENO) != 0;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    auto t = std::chrono::steady_clock::now();
+    Cloud scan;
+    loadCloud(seq.scan(frames[k]), scan);
+    read += scan.size();
+    load_s += secondsSince(t);
+
+    t = std::chrono::steady_clock::now();
+    auto world_scan = std::make_shared<Cloud>();
+    world_scan->reserve(scan.size());
+    for (const auto& p : scan) {
+      const double r = p.getVector3fMap().norm();
+      if (r >= o.min_range && r <= o.max_range) world_scan->push_back(p);
+    }
+    world_scan->width = static_cast<std::uint32_t>(world_scan->size());
+    world_scan->height = 1;
+    pcl::transformPointCloud(*world_scan, *world_scan,
+                             kittiScanToWorld(poses[frames[k]], tr, world).matrix().cast<float>());
+    if (o.voxel > 0.0) *world_scan = voxelize(world_scan, o.voxel);
+    kept += world_scan->size();
+    transform_s += secondsSince(t);
+
+    t = std::chrono::steady_clock::now();
+    Cloud band;
+    for (const auto& p : *world_scan) {
+      const float h = up.dot(p.getVector3fMap());
+      if (h >= o.min_height && h <= o.max_height) band.push_back(p);
+    }
+    mapped += band.size();
+    map.add(band);
+    map_s += secondsSince(t);
+    if (!o.out_cloud.empty()) *global += *world_scan;
+    if (progress) {
+      const double elapsed = secondsSince(t_start);
+      std::fprintf(
+          stderr, "\rframe %zu/%zu  %.1f M points/s  %.0f s left   ", k + 1, frames.size(),
+          static_cast<double>(read) / elapsed / 1e6,
+          elapsed / static_cast<double>(k + 1) * static_cast<double>(frames.size() - k - 1));
+    }
+  }
+  if (progress) std::fprintf(stderr, "\n");
+
+  auto t = std::chrono::steady_clock::now();
+  if (!o.out_cloud.empty()) {
+    if (o.voxel > 0.0) *global = voxelize(global, o.voxel);
+    savePcdAtomic(o.out_cloud, *global, parsePcdFormat(o.pcd_format));
+  }
+  const MapImage image = map.image();
+  std::size_t occupied = 0;
+  if (!o.out_map.empty()) {
+    const std::string stem = o.out_map.substr(0, o.out_map.find_last_of('.'));
+    occupied = writeMapServer(image, static_cast<std::uint32_t>(o.min_hits), o.out_map,
+                              stem + "_preview.png", stem + "_heat.png");
+  } else {
+    for (auto h : image.hits) occupied += h >= static_cast<std::uint64_t>(o.min_hits) && h > 0;
+  }
+  const double write_s = secondsSince(t);
+
+  if (o.format == "json") {
+    emit(nlohmann::json({{"frames", frames.size()},
+                         {"points_read", read},
+                         {"points_kept", kept},
+                         {"points_mapped", mapped},
+                         {"global_points", global->size()},
+                         {"seconds",
+                          {{"load", load_s},
+                           {"transform", transform_s},
+                           {"map", map_s},
+                           {"write", write_s},
+                           {"total", secondsSince(t_start)}}},
+                         {"map",
+                          {{"plane", o.map_plane},
+                           {"resolution", o.map_resolution},
+                           {"width", image.width},
+                           {"height", image.height},
+                           {"origin", {image.origin_x, image.origin_y, 0.0}},
+                           {"cells_with_hits", map.cells()},
+                           {"occupied_cells", occupied},
+                           {"min_hits", o.min_hits}}}})
+                 .dump(2) +
+             "\n",
+         "");
+    return;
+  }
+  Table tab({"frames", "points_read", "points_kept", "map_width", "map_height", "occupied_cells",
+             "seconds"});
+  tab.addRow({std::to_string(frames.size()), std::to_string(read), std::to_string(kept),
+              std::to_string(image.width), std::to_string(image.height), std::to_string(occupied),
+              fixed(secondsSince(t_start), 3)});
+  emitTable(tab, o.format);
+}
+
+}  // namespace
+
+void addKittiCommand(CLI::App& app) {
+  auto o = std::make_shared<KittiOptions>();
+  CLI::App* sub =
+      app.add_subcommand("kitti", "KITTI scans + poses -> global cloud, 2D occupancy map");
+  sub->add_option("root", o->root, "KITTI odometry root (sequences/, poses/)")->required();
+  sub->add_option("--sequence", o->sequence, "Sequence number")->capture_default_str();
+  sub->add_option("--frames", o->frames, "Frames, e.g. 0-5,15");
+  sub->add_option("--first", o->first, "First frame")->check(kCount);
+  sub->add_option("--count", o->count, "Number of frames")->check(kCount);
+  sub->add_option("--world", o->world, "camera (KITTI's, y down) or velodyne (z up)")
+      ->check(CLI::IsMember({"camera", "velodyne"}))
+      ->capture_default_str();
+  sub->add_option("--min-range", o->min_range, "Drop returns closer than this (m), e.g. the car")
+      ->check(kFiniteNonNegative);
+  sub->add_option("--max-range", o->max_range, "Drop returns further than this (m)")
+      ->check(kFinitePositive);
+  sub->add_option("--min-height", o->min_height, "Map only points at or above this height (m)");
+  sub->add_option("--max-height", o->max_height, "Map only points at or below this height (m)");
+  sub->add_option("--voxel", o->voxel, "Per-scan and global voxel size (m), 0: off")
+      ->check(kFiniteNonNegative);
+  sub->add_option("--out-cloud", o->out_cloud, "Write the global cloud (.pcd)");
+  addPcdFormatOption(*sub, o->pcd_format);
+  sub->add_option("--out-map", o->out_map,
+                  "map_server map: M.pgm + M.yaml, with M_preview.png and M_heat.png");
+  sub->add_option("--map-plane", o->map_plane, "Projection plane")
+      ->check(CLI::IsMember({"xz", "xy", "yz"}))
+      ->capture_default_str();
+  sub->add_option("--map-resolution", o->map_resolution, "Map cell size (m)")
+      ->check(kFinitePositive)
+      ->capture_default_str();
+  sub->add_option("--min-hits", o->min_hits, "Hits that make a cell occupied")
+      ->check(kCount & kFinitePositive)
+      ->capture_default_str();
+  addFormatOption(*sub, o->format, {"table", "json"});
+  sub->callback([o] { run(*o); });
+}
+
+}  // namespace metricmap::cli

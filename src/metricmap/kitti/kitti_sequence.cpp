@@ -1,0 +1,103 @@
+#include "metricmap/kitti/kitti_sequence.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "metricmap/exceptions.h"
+
+namespace metricmap {
+namespace {
+
+bool parse12(std::istream& is, Eigen::Isometry3d& t) {
+  double v[12];
+  for (double& x : v) {
+    if (!(is >> x) || !std::isfinite(x)) return false;
+  }
+  std::string extra;
+  if (is >> extra) return false;
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  for (int i = 0; i < 12; ++i) m(i / 4, i % 4) = v[i];
+  t.matrix() = m;
+  return true;
+}
+
+}  // namespace
+
+Eigen::Isometry3d readKittiCalibTr(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open");
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream is(line);
+    std::string key;
+    is >> key;
+    if (key != "Tr:") continue;
+    Eigen::Isometry3d tr;
+    if (!parse12(is, tr)) throw InputError(path + ": Tr is not 12 finite numbers");
+    return tr;
+  }
+  throw InputError(path + ": no 'Tr:' line (velodyne -> camera 0)");
+}
+
+std::vector<Eigen::Isometry3d> readKittiPoses(const std::string& path, std::size_t frames) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open");
+  std::vector<Eigen::Isometry3d> poses;
+  std::string line;
+  for (std::size_t n = 1; poses.size() < frames && std::getline(in, line); ++n) {
+    std::istringstream is(line);
+    Eigen::Isometry3d t;
+    if (!parse12(is, t)) {
+      throw InputError(path + ": line " + std::to_string(n) + " is not 12 finite numbers");
+    }
+    poses.push_back(t);
+  }
+  if (poses.size() < frames) {
+    throw InputError(path + ": " + std::to_string(poses.size()) + " pose(s), frames up to " +
+                     std::to_string(frames - 1) + " asked");
+  }
+  return poses;
+}
+
+std::vector<std::size_t> parseFrameList(const std::string& text) {
+  std::vector<std::size_t> frames;
+  std::istringstream is(text);
+  auto number = [&](const std::string& s) {
+    if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos || s.size() > 9) {
+      throw std::invalid_argument("frame list: '" + s + "' is not a frame number");
+    }
+    return static_cast<std::size_t>(std::stoul(s));
+  };
+  for (std::string item; std::getline(is, item, ',');) {
+    const auto dash = item.find('-');
+    if (dash == std::string::npos) {
+      frames.push_back(number(item));
+      continue;
+    }
+    const std::size_t a = number(item.substr(0, dash)), b = number(item.substr(dash + 1));
+    if (b < a) throw std::invalid_argument("frame list: range '" + item + "' runs backwards");
+    for (std::size_t f = a; f <= b; ++f) frames.push_back(f);
+  }
+  if (frames.empty()) throw std::invalid_argument("frame list is empty");
+  return frames;
+}
+
+std::string KittiSequence::scan(std::size_t frame) const {
+  char name[32];
+  std::snprintf(name, sizeof name, "%06zu.bin", frame);
+  return root + "/sequences/" + sequence + "/velodyne/" + name;
+}
+
+Eigen::Isometry3d kittiScanToWorld(const Eigen::Isometry3d& pose, const Eigen::Isometry3d& tr,
+                                   KittiWorld world) {
+  if (world == KittiWorld::Camera) return pose * tr;
+  // KITTI's Tr is orthonormal only to ~1e-7; invert the matrix, not just its rotation.
+  Eigen::Isometry3d tr_inv;
+  tr_inv.matrix() = tr.matrix().inverse();
+  return tr_inv * pose * tr;
+}
+
+}  // namespace metricmap

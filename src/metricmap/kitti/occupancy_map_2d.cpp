@@ -1,0 +1,135 @@
+#include "metricmap/kitti/occupancy_map_2d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <yaml-cpp/yaml.h>
+
+#include "metricmap/common/fast_floor.h"
+#include "metricmap/io/array_writers.h"
+#include "metricmap/io/cloud_writer.h"
+
+namespace metricmap {
+namespace {
+
+std::uint64_t pack(std::int64_t i, std::int64_t j) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(static_cast<std::int32_t>(i)))
+          << 32) |
+         static_cast<std::uint32_t>(static_cast<std::int32_t>(j));
+}
+
+void unpack(std::uint64_t key, std::int64_t& i, std::int64_t& j) {
+  i = static_cast<std::int32_t>(static_cast<std::uint32_t>(key >> 32));
+  j = static_cast<std::int32_t>(static_cast<std::uint32_t>(key & 0xFFFFFFFFu));
+}
+
+std::string baseName(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+}  // namespace
+
+MapPlane parseMapPlane(const std::string& name) {
+  if (name == "xz") return MapPlane::XZ;
+  if (name == "xy") return MapPlane::XY;
+  if (name == "yz") return MapPlane::YZ;
+  throw std::invalid_argument("map plane must be xz, xy or yz, got '" + name + "'");
+}
+
+OccupancyMap2D::OccupancyMap2D(double resolution, MapPlane plane)
+    : resolution_(resolution), plane_(plane) {
+  if (!std::isfinite(resolution) || !(resolution > 0.0)) {
+    throw std::invalid_argument("map resolution must be a finite number > 0");
+  }
+}
+
+void OccupancyMap2D::add(const pcl::PointCloud<pcl::PointXYZ>& world_points) {
+  const double inv = 1.0 / resolution_;
+  const int a = plane_ == MapPlane::YZ ? 1 : 0;
+  const int b = plane_ == MapPlane::XY ? 1 : 2;
+  constexpr double kLimit = 2.0e9;  // cell indices stay within int32
+  for (const pcl::PointXYZ& p : world_points) {
+    const float* v = &p.x;
+    if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) continue;
+    const double u = v[a] * inv, w = v[b] * inv;
+    if (std::fabs(u) > kLimit || std::fabs(w) > kLimit) {
+      throw std::invalid_argument("map resolution too fine for the coordinates (over 2e9 cells)");
+    }
+    ++hits_[pack(floorToInt(u), floorToInt(w))];
+  }
+}
+
+MapImage OccupancyMap2D::image() const {
+  MapImage m;
+  m.resolution = resolution_;
+  if (hits_.empty()) return m;
+  std::int64_t i0 = std::numeric_limits<std::int64_t>::max(), j0 = i0;
+  std::int64_t i1 = std::numeric_limits<std::int64_t>::min(), j1 = i1;
+  for (const auto& [key, count] : hits_) {
+    std::int64_t i, j;
+    unpack(key, i, j);
+    i0 = std::min(i0, i);
+    i1 = std::max(i1, i);
+    j0 = std::min(j0, j);
+    j1 = std::max(j1, j);
+  }
+  m.width = static_cast<int>(i1 - i0 + 1);
+  m.height = static_cast<int>(j1 - j0 + 1);
+  if (static_cast<double>(m.width) * m.height > 1e9) {
+    throw std::invalid_argument("map image would have over 1e9 pixels; use a coarser resolution");
+  }
+  m.origin_x = static_cast<double>(i0) * resolution_;
+  m.origin_y = static_cast<double>(j0) * resolution_;
+  m.hits.assign(static_cast<std::size_t>(m.width) * m.height, 0);
+  for (const auto& [key, count] : hits_) {
+    std::int64_t i, j;
+    unpack(key, i, j);
+    m.hits[static_cast<std::size_t>(j1 - j) * m.width + static_cast<std::size_t>(i - i0)] = count;
+  }
+  return m;
+}
+
+std::size_t writeMapServer(const MapImage& map, std::uint32_t min_hits, const std::string& pgm_path,
+                           const std::string& preview_png, const std::string& heat_png) {
+  if (map.width == 0) throw std::invalid_argument("the map is empty: no point was projected");
+  std::vector<std::uint8_t> grey(map.hits.size());
+  std::size_t occupied = 0;
+  std::uint32_t most = 1;
+  for (std::size_t i = 0; i < map.hits.size(); ++i) {
+    const bool occ = map.hits[i] >= min_hits && map.hits[i] > 0;
+    grey[i] = occ ? 0 : 254;
+    occupied += occ ? 1 : 0;
+    most = std::max(most, map.hits[i]);
+  }
+  writePgm(pgm_path, map.width, map.height, grey);
+
+  YAML::Emitter yaml;
+  yaml.SetDoublePrecision(10);
+  yaml << YAML::BeginMap << YAML::Key << "image" << YAML::Value << baseName(pgm_path) << YAML::Key
+       << "resolution" << YAML::Value << map.resolution << YAML::Key << "origin" << YAML::Value
+       << YAML::Flow << YAML::BeginSeq << map.origin_x << map.origin_y << 0.0 << YAML::EndSeq
+       << YAML::Key << "negate" << YAML::Value << 0 << YAML::Key << "occupied_thresh" << YAML::Value
+       << 0.65 << YAML::Key << "free_thresh" << YAML::Value << 0.196 << YAML::EndMap;
+  const std::string stem = pgm_path.substr(0, pgm_path.find_last_of('.'));
+  writeTextAtomic(stem + ".yaml", std::string(yaml.c_str()) + "\n");
+
+  if (!preview_png.empty()) writePng(preview_png, map.width, map.height, 1, grey);
+  if (!heat_png.empty()) {
+    std::vector<std::uint8_t> heat(map.hits.size() * 3, 0);
+    const double scale = std::log1p(static_cast<double>(most));
+    for (std::size_t i = 0; i < map.hits.size(); ++i) {
+      if (map.hits[i] == 0) continue;
+      const double t = std::log1p(static_cast<double>(map.hits[i])) / scale;  // 0..1
+      heat[3 * i] = static_cast<std::uint8_t>(255 * std::min(1.0, 1.5 * t));
+      heat[3 * i + 1] = static_cast<std::uint8_t>(255 * std::max(0.0, 1.5 * t - 0.5));
+      heat[3 * i + 2] = static_cast<std::uint8_t>(255 * std::max(0.0, 0.6 - t));
+    }
+    writePng(heat_png, map.width, map.height, 3, heat);
+  }
+  return occupied;
+}
+
+}  // namespace metricmap

@@ -1,0 +1,61 @@
+#pragma once
+/// \file occupancy_map_2d.h
+/// \brief 2D hit-count map by projection onto a plane, and its map_server form.
+
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+namespace metricmap {
+
+/// \brief Projection plane: the image's x and y axes are these world axes. For xz the image's
+/// x is world x and its y is world z; rows run from the top, so row 0 holds the largest z.
+enum class MapPlane { XZ, XY, YZ };
+
+/// \brief "xz" | "xy" | "yz". \throws std::invalid_argument
+MapPlane parseMapPlane(const std::string& name);
+
+/// \brief A dense view of the map: hits per pixel, row 0 at the top; origin is the world
+/// position (along the plane's two axes) of the lower-left corner of the lower-left pixel.
+struct MapImage {
+  int width = 0, height = 0;
+  double resolution = 0.0;
+  double origin_x = 0.0, origin_y = 0.0;
+  std::vector<std::uint32_t> hits;
+  std::uint32_t at(int col, int row) const {
+    return hits[static_cast<std::size_t>(row) * width + col];
+  }
+};
+
+/// \brief Counts hits per cell of `resolution` on the plane; grows with the data (sparse cells).
+/// \note Thread safety: one instance per thread.
+class OccupancyMap2D {
+ public:
+  /// \throws std::invalid_argument for a resolution that is not finite and > 0
+  OccupancyMap2D(double resolution, MapPlane plane);
+  /// \brief Count every finite point (already in the world frame).
+  void add(const pcl::PointCloud<pcl::PointXYZ>& world_points);
+  /// \brief Cells with at least one hit.
+  std::size_t cells() const { return hits_.size(); }
+  /// \brief The dense image over the hit cells' bounds (empty map: 0 x 0).
+  MapImage image() const;
+
+ private:
+  double resolution_;
+  MapPlane plane_;
+  std::unordered_map<std::uint64_t, std::uint32_t> hits_;
+};
+
+/// \brief Write a map_server pair: PGM (occupied = hits >= min_hits, 0 black; else 254) and
+/// YAML beside it (same name, .yaml): image, resolution, origin [x, y, 0] of the lower-left
+/// pixel, negate 0, occupied_thresh 0.65, free_thresh 0.196. Also PNG preview and heat map
+/// when their paths are not empty. Files are written through temporary names and renamed.
+/// \return the number of occupied cells
+std::size_t writeMapServer(const MapImage& map, std::uint32_t min_hits, const std::string& pgm_path,
+                           const std::string& preview_png, const std::string& heat_png);
+
+}  // namespace metricmap

@@ -1,0 +1,148 @@
+// KITTI readers against hand values, the transforms on known points, the 2D map against a
+// brute-force recount, and the ground-truth alignment of frames 1-5 with frame 0.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include <pcl/common/transforms.h>
+#include <pcl/kdtree/kdtree_flann.h>
+
+#include <gtest/gtest.h>
+
+#include "metricmap/exceptions.h"
+#include "metricmap/io/cloud_reader.h"
+#include "metricmap/kitti/kitti_sequence.h"
+#include "metricmap/kitti/occupancy_map_2d.h"
+#include "test_data.h"
+
+namespace metricmap {
+namespace {
+
+using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+const KittiSequence kSeq{dataPath("kitti_odometry_00"), "00"};
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+  const auto p = std::filesystem::temp_directory_path() / ("metricmap_kitti_" + name);
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+}  // namespace
+
+TEST(Kitti, CalibAndPosesAgainstHandValues) {
+  const Eigen::Isometry3d tr = readKittiCalibTr(kSeq.calib());
+  EXPECT_DOUBLE_EQ(tr(0, 0), 4.276802385584e-04);
+  EXPECT_DOUBLE_EQ(tr(0, 1), -9.999672484946e-01);
+  EXPECT_DOUBLE_EQ(tr(0, 3), -1.198459927713e-02);
+  EXPECT_DOUBLE_EQ(tr(2, 3), -2.921968648686e-01);
+  const auto poses = readKittiPoses(kSeq.poses(), 6);
+  ASSERT_EQ(poses.size(), 6u);
+  EXPECT_DOUBLE_EQ(poses[1](0, 0), 9.999978e-01);
+  EXPECT_DOUBLE_EQ(poses[1](0, 3), -4.690294e-02);
+  EXPECT_DOUBLE_EQ(poses[1](2, 3), 8.586941e-01);
+  EXPECT_EQ(kSeq.scan(5), dataPath("kitti_odometry_00") + "/sequences/00/velodyne/000005.bin");
+}
+
+TEST(Kitti, FrameListsAndBadFiles) {
+  EXPECT_EQ(parseFrameList("0-3,7"), (std::vector<std::size_t>{0, 1, 2, 3, 7}));
+  EXPECT_THROW(parseFrameList("3-1"), std::invalid_argument);
+  EXPECT_THROW(parseFrameList("a"), std::invalid_argument);
+  EXPECT_THROW(parseFrameList(""), std::invalid_argument);
+  EXPECT_THROW(readKittiCalibTr(writeTemp("calib_no_tr.txt", "P0: 1 0 0 0 0 1 0 0 0 0 1 0\n")),
+               InputError);
+  EXPECT_THROW(readKittiCalibTr(writeTemp("calib_short.txt", "Tr: 1 0 0\n")), InputError);
+  EXPECT_THROW(readKittiPoses(kSeq.poses(), 5000), InputError);  // the file has 4541 lines
+  EXPECT_THROW(readKittiPoses(writeTemp("poses_nan.txt", "1 0 0 0 0 1 0 0 0 0 1 nan\n"), 1),
+               InputError);
+  EXPECT_THROW(readKittiCalibTr("/no/such/calib.txt"), InputError);
+}
+
+TEST(Kitti, TransformsOfKnownPoints) {
+  const Eigen::Isometry3d tr = readKittiCalibTr(kSeq.calib());
+  const Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
+  // A point 10 m ahead of the velodyne is about 10 m along the camera's z (forward).
+  const Eigen::Vector3d ahead =
+      kittiScanToWorld(identity, tr, KittiWorld::Camera) * Eigen::Vector3d(10, 0, 0);
+  EXPECT_NEAR(ahead.z(), 10.0 * 9.999738645903e-01 - 2.921968648686e-01, 1e-9);
+  EXPECT_NEAR(ahead.x(), 10.0 * 4.276802385584e-04 - 1.198459927713e-02, 1e-9);
+  // The velodyne world of frame 0 is the velodyne frame itself.
+  const Eigen::Vector3d p(3, -2, 1);
+  EXPECT_LT((kittiScanToWorld(identity, tr, KittiWorld::Velodyne) * p - p).norm(), 1e-12);
+  // With frame 1's pose: velodyne world = Tr^-1 P1 Tr, camera world = P1 Tr.
+  const auto poses = readKittiPoses(kSeq.poses(), 2);
+  const Eigen::Vector3d cam = kittiScanToWorld(poses[1], tr, KittiWorld::Camera) * p;
+  const Eigen::Vector3d velo = kittiScanToWorld(poses[1], tr, KittiWorld::Velodyne) * p;
+  EXPECT_LT((tr * velo - cam).norm(), 1e-9);
+}
+
+TEST(Kitti, MapMatchesBruteForceRecount) {
+  Cloud scan;
+  loadCloud(kSeq.scan(0), scan);
+  for (MapPlane plane : {MapPlane::XZ, MapPlane::XY, MapPlane::YZ}) {
+    OccupancyMap2D map(0.25, plane);
+    map.add(scan);
+    const MapImage img = map.image();
+    const int a = plane == MapPlane::YZ ? 1 : 0, b = plane == MapPlane::XY ? 1 : 2;
+    std::map<std::pair<long, long>, std::uint32_t> ref;
+    for (const auto& p : scan) {
+      const float* v = &p.x;
+      ++ref[{static_cast<long>(std::floor(v[a] / 0.25)),
+             static_cast<long>(std::floor(v[b] / 0.25))}];
+    }
+    EXPECT_EQ(map.cells(), ref.size());
+    std::uint64_t total = 0;
+    for (const auto& [cell, n] : ref) {
+      const int col = static_cast<int>(std::lround(cell.first - img.origin_x / 0.25));
+      const int row =
+          img.height - 1 - static_cast<int>(std::lround(cell.second - img.origin_y / 0.25));
+      ASSERT_GE(col, 0);
+      ASSERT_GE(row, 0);
+      ASSERT_EQ(img.at(col, row), n);
+      total += n;
+    }
+    EXPECT_EQ(total, scan.size());
+  }
+}
+
+TEST(Kitti, GroundTruthPosesAlignFramesWithFrameZero) {
+  const Eigen::Isometry3d tr = readKittiCalibTr(kSeq.calib());
+  const auto poses = readKittiPoses(kSeq.poses(), 6);
+  auto nonGround = [&](std::size_t f, const Eigen::Isometry3d& pose) {
+    Cloud scan, kept;
+    loadCloud(kSeq.scan(f), scan);
+    for (const auto& p : scan) {
+      const float r = p.getVector3fMap().norm();
+      if (r > 3.0f && r < 40.0f && p.z > -1.3f) kept.push_back(p);
+    }
+    Cloud world;
+    pcl::transformPointCloud(kept, world, (pose * tr).matrix().cast<float>());
+    return world;
+  };
+  auto reference = std::make_shared<Cloud>(nonGround(0, poses[0]));
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud(reference);
+  auto medianDistance = [&](const Cloud& c) {
+    std::vector<float> d;
+    pcl::Indices idx(1);
+    std::vector<float> sq(1);
+    for (std::size_t i = 0; i < c.size(); i += 7) {
+      tree.nearestKSearch(c[i], 1, idx, sq);
+      d.push_back(std::sqrt(sq[0]));
+    }
+    std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
+    return d[d.size() / 2];
+  };
+  for (std::size_t f = 1; f <= 5; ++f) {
+    const float with_truth = medianDistance(nonGround(f, poses[f]));
+    const float with_identity = medianDistance(nonGround(f, poses[0]));
+    EXPECT_LT(with_truth, 0.2f) << "frame " << f;
+    if (f >= 3) {
+      EXPECT_GT(with_identity, 0.2f) << "frame " << f;  // moved ~2.6 m by frame 3
+    }
+    EXPECT_LT(with_truth, with_identity) << "frame " << f;
+  }
+}
+
+}  // namespace metricmap
