@@ -61,12 +61,12 @@ void run(const KittiOptions& o) {
   const auto t_start = std::chrono::steady_clock::now();
   const std::vector<std::size_t> frames = selectFrames(o);
   const KittiSequence seq{o.root, o.sequence};
-  const Eigen::Isometry3d tr = readKittiCalibTr(seq.calib());
-  const std::size_t last = *std::max_element(frames.begin(), frames.end());
-  const std::vector<Eigen::Isometry3d> poses = readKittiPoses(seq.poses(), last + 1);
   for (std::size_t f : frames) {  // every scan must exist before any work is done
     if (access(seq.scan(f).c_str(), R_OK) != 0) throw InputError(seq.scan(f) + ": missing frame");
   }
+  const Eigen::Isometry3d tr = readKittiCalibTr(seq.calib());
+  const std::size_t last = *std::max_element(frames.begin(), frames.end());
+  const std::vector<Eigen::Isometry3d> poses = readKittiPoses(seq.poses(), last + 1);
   const KittiWorld world = o.world == "velodyne" ? KittiWorld::Velodyne : KittiWorld::Camera;
   // The world's up axis: -y for KITTI's camera frame, z for the velodyne frame.
   const Eigen::Vector3f up =

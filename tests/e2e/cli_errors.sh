@@ -101,6 +101,30 @@ printf '1.0 0 0 nan 0 0 0 1\n' >"$tmp/nan_traj.txt"
 expect 1 "$tmp/nan_traj.txt" -- "$MM" heightmap "$kd" --camera "$kx" --trajectory "$tmp/nan_traj.txt" "${hm[@]}"
 check "no map written after bad input" test ! -e "$tmp/hm_obstacles.png"
 
+# kitti: a scratch sequence with links to the real scans and crafted calib/poses.
+kr=$tmp/kitti
+mkdir -p "$kr/sequences/00/velodyne" "$kr/poses"
+for f in 000000 000001; do ln -s "$DATA/kitti_odometry_00/sequences/00/velodyne/$f.bin" "$kr/sequences/00/velodyne/$f.bin"; done
+head -c 1000 "$DATA/kitti_odometry_00/sequences/00/velodyne/000002.bin" | head -c 999 >"$kr/sequences/00/velodyne/000002.bin"
+cp "$DATA/kitti_odometry_00/sequences/00/calib.txt" "$kr/sequences/00/calib.txt"
+head -n 3 "$DATA/kitti_odometry_00/poses/00.txt" >"$kr/poses/00.txt"
+expect 1 "000003.bin: missing frame" -- "$MM" kitti "$kr" --frames 0-1,3 --out-map "$tmp/km.pgm"
+expect 1 "not a multiple of 16" -- "$MM" kitti "$kr" --frames 2 --out-map "$tmp/km.pgm"
+head -n 1 "$DATA/kitti_odometry_00/poses/00.txt" >"$kr/poses/00.txt"
+expect 1 "1 pose(s)" -- "$MM" kitti "$kr" --first 0 --count 2 --out-map "$tmp/km.pgm"
+head -n 3 "$DATA/kitti_odometry_00/poses/00.txt" >"$kr/poses/00.txt"
+check "no map after bad input" test ! -e "$tmp/km.pgm"
+grep -v '^Tr:' "$DATA/kitti_odometry_00/sequences/00/calib.txt" >"$kr/sequences/00/calib.txt"
+expect 1 "no 'Tr:' line" -- "$MM" kitti "$kr" --frames 0
+cp "$DATA/kitti_odometry_00/sequences/00/calib.txt" "$kr/sequences/00/calib.txt"
+sed -i '2s/^[^ ]*/nan/' "$kr/poses/00.txt"
+expect 1 "line 2 is not 12 finite numbers" -- "$MM" kitti "$kr" --frames 0-1
+expect 2 "--frames" -- "$MM" kitti "$kr" --frames 0 --first 0 --count 1
+expect 2 "frames" -- "$MM" kitti "$kr"
+expect 1 "frame list" -- "$MM" kitti "$kr" --frames 3-1
+expect 2 "--map-resolution" -- "$MM" kitti "$kr" --frames 0 --map-resolution 0
+expect 2 "--map-plane" -- "$MM" kitti "$kr" --frames 0 --map-plane ab
+
 # Output errors: exit 1, nothing half-written.
 expect 1 "$tmp/nodir/means.pcd" -- "$MM" grid "$scan" --cell-size 1 --out "$tmp/nodir/means.pcd"
 expect 1 "$tmp/nodir/cells.csv" -- "$MM" grid "$scan" --cell-size 1 --cells "$tmp/nodir/cells.csv"

@@ -69,4 +69,18 @@ check "heightmap accounts for every valid pixel" bash -c "python3 -c 1 2>/dev/nu
 check "explicit pose works" "$MM" heightmap "$tum/TUM_depth.png" --camera "$tum/camera_primesense.json" \
   --camera-height 1.2 --pitch-deg 20 --resolution 0.05 --map-size 200 --z-bins 0.1,1.0 \
   --out-prefix "$tmp/tum2" --format table
+kitti=$DATA/kitti_odometry_00
+check "kitti frames 0-5 to a map_server map and a global cloud" bash -c "'$MM' kitti '$kitti' \
+  --frames 0-5 --min-range 2.5 --out-map '$tmp/k.pgm' --out-cloud '$tmp/k.pcd' \
+  --map-resolution 0.2 --min-hits 2 --format json >'$tmp/k.json'"
+check "PGM is binary P5" bash -c "head -c 2 '$tmp/k.pgm' | grep -q P5"
+check "YAML names the image and the thresholds" bash -c "grep -q '^image: k.pgm' '$tmp/k.yaml' && \
+  grep -q '^negate: 0' '$tmp/k.yaml' && grep -q '^occupied_thresh: 0.65' '$tmp/k.yaml' && \
+  grep -q '^free_thresh: 0.196' '$tmp/k.yaml' && grep -q '^origin: \[' '$tmp/k.yaml'"
+check "preview and heat map PNGs" test -s "$tmp/k_preview.png" -a -s "$tmp/k_heat.png"
+check "every point of the six scans read" grep -q '"points_read": 745811' "$tmp/k.json"
+check "the global cloud holds the kept points" bash -c "'$MM' info '$tmp/k.pcd' --format json | \
+  grep -q \"\\\"points\\\": \$(grep -o '\"points_kept\": [0-9]*' '$tmp/k.json' | grep -o '[0-9]*$')\""
+check "velodyne world and xy plane" "$MM" kitti "$kitti" --first 0 --count 2 --world velodyne \
+  --map-plane xy --out-map "$tmp/kv.pgm"
 finish
