@@ -15,8 +15,8 @@
 namespace metricmap::bench {
 namespace {
 
-constexpr double kDistance = 0.03;      // d_th and the RANSAC inlier distance, metres
-constexpr std::size_t kMinPoints = 8;   // purge / stop RANSAC below this many points
+constexpr double kDistance = 0.03;     // d_th and the RANSAC inlier distance, metres
+constexpr std::size_t kMinPoints = 8;  // purge / stop RANSAC below this many points
 constexpr double kMatchAngle = 5.0 * M_PI / 180.0;
 constexpr double kMatchOffset = 0.05;
 
@@ -28,8 +28,9 @@ struct Scans {
 const Scans& mines() {
   static Scans s = [] {
     Scans out;
-    const ScanLog log = readScanLines(
-        std::string(METRICMAP_DATA_DIR) + "/breezyslam_mines_urg04lx/exp2.dat", urg04lxMinesFormat());
+    const ScanLog log =
+        readScanLines(std::string(METRICMAP_DATA_DIR) + "/breezyslam_mines_urg04lx/exp2.dat",
+                      urg04lxMinesFormat());
     for (const LaserScan& scan : log.scans) {
       auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>(scanToCloud(scan));
       auto valid = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();

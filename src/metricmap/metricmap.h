@@ -13,6 +13,8 @@
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/laser_scan.h"
+#include "metricmap/kitti/kitti_sequence.h"
+#include "metricmap/kitti/occupancy_map_2d.h"
 #include "metricmap/lines/line_segment.h"
 #include "metricmap/lines/split_and_merge.h"
 #include "metricmap/octree/adaptive_octree.h"
