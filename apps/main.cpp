@@ -28,9 +28,9 @@ int main(int argc, char** argv) {
     bool known = false;
     for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->check_name(argv[1]);
     if (!known) {
-      std::cerr
-          << "metricmap: usage: unknown subcommand '" << argv[1]
-          << "' (info, grid, octree, compare, lines, depth-to-cloud, heightmap, kitti; see --help)\n";
+      std::cerr << "metricmap: usage: unknown subcommand '" << argv[1]
+                << "' (info, grid, octree, compare, lines, depth-to-cloud, heightmap, kitti; see "
+                   "--help)\n";
       return 2;
     }
   }

@@ -1,5 +1,5 @@
 # PCL's io component pulls in VTK; keep the component list short for configure speed.
-find_package(PCL 1.12 REQUIRED COMPONENTS common io filters octree sample_consensus segmentation kdtree)
+find_package(PCL 1.12 REQUIRED COMPONENTS common io filters octree sample_consensus segmentation kdtree registration)
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(nlohmann_json 3.2 REQUIRED)
 find_package(yaml-cpp REQUIRED)

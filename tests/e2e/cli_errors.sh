@@ -124,6 +124,8 @@ expect 2 "frames" -- "$MM" kitti "$kr"
 expect 1 "frame list" -- "$MM" kitti "$kr" --frames 3-1
 expect 2 "--map-resolution" -- "$MM" kitti "$kr" --frames 0 --map-resolution 0
 expect 2 "--map-plane" -- "$MM" kitti "$kr" --frames 0 --map-plane ab
+expect 2 "--perturb" -- "$MM" kitti "$kr" --frames 0 --perturb 0.5
+expect 2 "--refine" -- "$MM" kitti "$kr" --frames 0 --refine ndt
 
 # Output errors: exit 1, nothing half-written.
 expect 1 "$tmp/nodir/means.pcd" -- "$MM" grid "$scan" --cell-size 1 --out "$tmp/nodir/means.pcd"

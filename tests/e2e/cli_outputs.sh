@@ -83,4 +83,9 @@ check "the global cloud holds the kept points" bash -c "'$MM' info '$tmp/k.pcd' 
   grep -q \"\\\"points\\\": \$(grep -o '\"points_kept\": [0-9]*' '$tmp/k.json' | grep -o '[0-9]*$')\""
 check "velodyne world and xy plane" "$MM" kitti "$kitti" --first 0 --count 2 --world velodyne \
   --map-plane xy --out-map "$tmp/kv.pgm"
+check "kitti --refine icp --perturb reports per-frame errors and the ATE" bash -c "'$MM' kitti \
+  '$kitti' --frames 0-2 --min-range 2.5 --refine icp --perturb 0.5,2 --seed 3 --format json \
+  >'$tmp/reg.json' && grep -q '\"ate_after\"' '$tmp/reg.json' && grep -q '\"correction\"' '$tmp/reg.json'"
+check "--perturb moves each later pose by exactly 0.5 m" bash -c \
+  "grep -A3 error_before '$tmp/reg.json' | grep -c '\"translation\": 0.5' | grep -qx 2"
 finish

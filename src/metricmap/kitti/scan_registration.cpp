@@ -1,0 +1,84 @@
+#include "metricmap/kitti/scan_registration.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <pcl/registration/gicp.h>
+#include <pcl/registration/icp.h>
+
+namespace metricmap {
+namespace {
+
+Eigen::Vector3d randomUnit(std::mt19937& rng) {
+  std::normal_distribution<double> g(0.0, 1.0);
+  Eigen::Vector3d v;
+  do {
+    v = Eigen::Vector3d(g(rng), g(rng), g(rng));
+  } while (v.norm() < 1e-9);
+  return v.normalized();
+}
+
+template <typename Registration>
+RefineResult run(Registration& reg, const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& scan,
+                 const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& target,
+                 const Eigen::Isometry3d& initial, const RefineParams& p) {
+  reg.setInputSource(scan);
+  reg.setInputTarget(target);
+  reg.setMaximumIterations(p.max_iterations);
+  reg.setTransformationEpsilon(1e-10);
+  reg.setEuclideanFitnessEpsilon(1e-8);
+  pcl::PointCloud<pcl::PointXYZ> aligned;
+  Eigen::Matrix4f guess = initial.matrix().cast<float>();
+  RefineResult r;
+  // Coarse then fine: the first stage pulls in from up to max_correspondence, the second
+  // refines with a quarter of it so that far outliers no longer drag the result.
+  for (double dist : {p.max_correspondence, p.max_correspondence / 4}) {
+    reg.setMaxCorrespondenceDistance(dist);
+    reg.align(aligned, guess);
+    guess = reg.getFinalTransformation();
+    r.converged = reg.hasConverged();
+    r.fitness = reg.getFitnessScore(dist);
+  }
+  r.scan_to_world.matrix() = guess.cast<double>();
+  return r;
+}
+
+}  // namespace
+
+RefineMethod parseRefineMethod(const std::string& name) {
+  if (name == "icp") return RefineMethod::Icp;
+  if (name == "gicp") return RefineMethod::Gicp;
+  throw std::invalid_argument("refine method must be icp or gicp, got '" + name + "'");
+}
+
+RefineResult refineScanPose(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& scan,
+                            const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& target,
+                            const Eigen::Isometry3d& initial, const RefineParams& params) {
+  if (params.method == RefineMethod::Gicp) {
+    pcl::GeneralizedIterativeClosestPoint<pcl::PointXYZ, pcl::PointXYZ> gicp;
+    return run(gicp, scan, target, initial, params);
+  }
+  pcl::IterativeClosestPoint<pcl::PointXYZ, pcl::PointXYZ> icp;
+  return run(icp, scan, target, initial, params);
+}
+
+PoseError poseError(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  // Full inverse: KITTI's Tr makes these matrices orthonormal only to ~1e-7.
+  const Eigen::Matrix4d d = a.matrix().inverse() * b.matrix();
+  PoseError e;
+  e.translation = d.block<3, 1>(0, 3).norm();
+  const double c = std::max(-1.0, std::min(1.0, (d.block<3, 3>(0, 0).trace() - 1.0) / 2.0));
+  e.rotation_deg = std::acos(c) * 180.0 / M_PI;
+  return e;
+}
+
+Eigen::Isometry3d perturbPose(const Eigen::Isometry3d& pose, double translation,
+                              double rotation_deg, std::mt19937& rng) {
+  Eigen::Isometry3d delta = Eigen::Isometry3d::Identity();
+  delta.linear() =
+      Eigen::AngleAxisd(rotation_deg * M_PI / 180.0, randomUnit(rng)).toRotationMatrix();
+  delta.translation() = translation * randomUnit(rng);
+  return pose * delta;
+}
+
+}  // namespace metricmap
