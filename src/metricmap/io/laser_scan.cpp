@@ -65,6 +65,35 @@ bool fillRanges(const std::vector<std::string>& t, std::size_t first, std::size_
   return true;
 }
 
+enum class LineKind { Scan, Malformed, Other };
+
+/// The loop every line-based log shares: `parse` turns one line's tokens into a scan, or says
+/// the line is malformed (counted, warned about) or something else (ignored).
+template <typename Parse>
+ScanLog readEachLine(const std::string& path, Parse parse) {
+  std::ifstream in = openText(path);
+  ScanLog log;
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> t = tokens(line);
+    if (t.empty()) continue;
+    LaserScan scan;
+    switch (parse(t, scan)) {
+      case LineKind::Scan:
+        log.scans.push_back(std::move(scan));
+        break;
+      case LineKind::Malformed:
+        ++log.skipped_lines;
+        break;
+      case LineKind::Other:
+        break;
+    }
+  }
+  warnSkipped(path, log);
+  requireScans(path, log);
+  return log;
+}
+
 }  // namespace
 
 std::size_t LaserScan::validBeams() const {
@@ -124,24 +153,13 @@ ScanLog readAngleRangeCsv(const std::string& path) {
 
 ScanLog readScanLines(const std::string& path, const ScanLineFormat& f) {
   validateScanLineFormat(f);
-  std::ifstream in = openText(path);
-  ScanLog log;
-  std::string line;
-  while (std::getline(in, line)) {
-    const std::vector<std::string> t = tokens(line);
-    if (t.empty()) continue;
-    LaserScan scan;
-    if (t.size() < f.skip_tokens + f.count ||
-        !fillRanges(t, f.skip_tokens, f.count, f.angle_min_deg * kDeg, f.angle_increment_deg * kDeg,
-                    f.range_scale, f.min_range, f.max_range, scan)) {
-      ++log.skipped_lines;
-      continue;
-    }
-    log.scans.push_back(std::move(scan));
-  }
-  warnSkipped(path, log);
-  requireScans(path, log);
-  return log;
+  return readEachLine(path, [&](const std::vector<std::string>& t, LaserScan& scan) {
+    const bool ok =
+        t.size() >= f.skip_tokens + f.count &&
+        fillRanges(t, f.skip_tokens, f.count, f.angle_min_deg * kDeg, f.angle_increment_deg * kDeg,
+                   f.range_scale, f.min_range, f.max_range, scan);
+    return ok ? LineKind::Scan : LineKind::Malformed;
+  });
 }
 
 bool looksLikeCarmen(const std::string& path) {
@@ -154,44 +172,33 @@ bool looksLikeCarmen(const std::string& path) {
 }
 
 ScanLog readCarmenLog(const std::string& path) {
-  std::ifstream in = openText(path);
-  ScanLog log;
-  std::string line;
-  while (std::getline(in, line)) {
-    const std::vector<std::string> t = tokens(line);
-    if (t.empty()) continue;
-    LaserScan scan;
-    bool ok = false;
+  return readEachLine(path, [](const std::vector<std::string>& t, LaserScan& scan) {
     double n_raw = 0.0;
-    if (t[0] == "FLASER" && t.size() >= 2 && parseDouble(t[1], n_raw) && n_raw >= 1 &&
-        n_raw == std::floor(n_raw)) {
-      const auto n = static_cast<std::size_t>(n_raw);
-      const double step =
-          (n % 2 == 1 && n > 1) ? M_PI / static_cast<double>(n - 1) : M_PI / static_cast<double>(n);
-      ok = t.size() >= 2 + n && fillRanges(t, 2, n, -M_PI / 2, step, 1.0, 0.0,
-                                           std::numeric_limits<double>::infinity(), scan);
-    } else if (t[0] == "ROBOTLASER1" && t.size() >= 9) {
+    bool ok = false;
+    if (t[0] == "FLASER") {
+      ok = t.size() >= 2 && parseDouble(t[1], n_raw) && n_raw >= 1 && n_raw == std::floor(n_raw);
+      if (ok) {
+        const auto n = static_cast<std::size_t>(n_raw);
+        const double step = (n % 2 == 1 && n > 1) ? M_PI / static_cast<double>(n - 1)
+                                                  : M_PI / static_cast<double>(n);
+        ok = t.size() >= 2 + n && fillRanges(t, 2, n, -M_PI / 2, step, 1.0, 0.0,
+                                             std::numeric_limits<double>::infinity(), scan);
+      }
+    } else if (t[0] == "ROBOTLASER1") {
       double start = 0, fov = 0, res = 0, max_r = 0;
-      ok = parseDouble(t[2], start) && parseDouble(t[3], fov) && parseDouble(t[4], res) &&
-           parseDouble(t[5], max_r) && parseDouble(t[8], n_raw) && n_raw >= 1 &&
-           n_raw == std::floor(n_raw) && res > 0.0;
+      ok = t.size() >= 9 && parseDouble(t[2], start) && parseDouble(t[3], fov) &&
+           parseDouble(t[4], res) && parseDouble(t[5], max_r) && parseDouble(t[8], n_raw) &&
+           n_raw >= 1 && n_raw == std::floor(n_raw) && res > 0.0;
       if (ok) {
         const auto n = static_cast<std::size_t>(n_raw);
         ok = t.size() >= 9 + n && fillRanges(t, 9, n, start, res, 1.0, 0.0,
                                              max_r > 0.0 ? max_r * (1 - 1e-9) : INFINITY, scan);
       }
     } else {
-      continue;  // odometry, parameters, other sensors
+      return LineKind::Other;  // odometry, parameters, other sensors
     }
-    if (!ok) {
-      ++log.skipped_lines;
-      continue;
-    }
-    log.scans.push_back(std::move(scan));
-  }
-  warnSkipped(path, log);
-  requireScans(path, log);
-  return log;
+    return ok ? LineKind::Scan : LineKind::Malformed;
+  });
 }
 
 pcl::PointCloud<pcl::PointXYZ> scanToCloud(const LaserScan& scan) {
