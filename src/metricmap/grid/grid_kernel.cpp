@@ -146,7 +146,7 @@ void buildGrid(const PointSpan& points, const GridParams& params, GridWorkspace&
   result.cells.reserve(runs);
 
   constexpr std::size_t kAhead = 48;  // prefetch distance, measured (docs/BENCHMARKS.md)
-  std::uint64_t row_start = 0;  // key of (0, iy, iz) for the row of the previous cell
+  std::uint64_t row_start = 0;        // key of (0, iy, iz) for the row of the previous cell
   std::int64_t iy = 0, iz = 0;
   bool have_row = false;
   for (std::size_t begin = 0; begin < n;) {

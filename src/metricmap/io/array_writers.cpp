@@ -49,7 +49,8 @@ void writePng(const std::string& path, int width, int height, int channels,
   writeImage<vtkPNGWriter>(path, width, height, channels, pixels);
 }
 
-void writePgm(const std::string& path, int width, int height, const std::vector<std::uint8_t>& grey) {
+void writePgm(const std::string& path, int width, int height,
+              const std::vector<std::uint8_t>& grey) {
   writeImage<vtkPNMWriter>(path, width, height, 1, grey);
 }
 

@@ -16,7 +16,8 @@ void writePng(const std::string& path, int width, int height, int channels,
 
 /// \brief Write an 8-bit grey image as binary PGM (P5) through VTK's PNM writer.
 /// \throws std::runtime_error naming the file
-void writePgm(const std::string& path, int width, int height, const std::vector<std::uint8_t>& grey);
+void writePgm(const std::string& path, int width, int height,
+              const std::vector<std::uint8_t>& grey);
 
 /// \brief Write a C-order little-endian uint32 array as .npy (format 1.0). No Debian package
 /// writes .npy from C++ (Boost.NumPy needs a Python runtime); the format is a short header.

@@ -30,9 +30,10 @@ int main(int argc, char** argv) {
   std::vector<pcl::PointIndices> members;
   sam.segment(segments, members);
 
-  std::cout << segments.size() << " segments; metricmap " << METRICMAP_VERSION << ": " << cloud->size() << " points, "
-            << grid.getStatistics().occupied_cells << " occupied cells, "
-            << octree.getStatistics().occupied_leaves << " occupied leaves\n";
+  std::cout << segments.size() << " segments; metricmap " << METRICMAP_VERSION << ": "
+            << cloud->size() << " points, " << grid.getStatistics().occupied_cells
+            << " occupied cells, " << octree.getStatistics().occupied_leaves
+            << " occupied leaves\n";
   const bool ok = cells.size() == grid.getStatistics().occupied_cells &&
                   leaves.size() == octree.getStatistics().occupied_leaves && segments.size() == 2;
   return ok ? 0 : 1;
