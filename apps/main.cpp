@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   metricmap::cli::addDepthToCloudCommand(app);
   metricmap::cli::addHeightMapCommand(app);
   metricmap::cli::addKittiCommand(app);
+  metricmap::cli::addViewCommand(app);
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
     for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->check_name(argv[1]);

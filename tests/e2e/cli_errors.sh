@@ -127,6 +127,12 @@ expect 2 "--map-plane" -- "$MM" kitti "$kr" --frames 0 --map-plane ab
 expect 2 "--perturb" -- "$MM" kitti "$kr" --frames 0 --perturb 0.5
 expect 2 "--refine" -- "$MM" kitti "$kr" --frames 0 --refine ndt
 
+# view without an X display: a clear message, not a crash.
+expect 1 "no X display" -- env -u DISPLAY "$MM" view "$scan" --screenshot "$tmp/v.png"
+expect 1 "no X display" -- env -u DISPLAY "$MM" view "$scan"
+expect 2 "--window-size" -- env DISPLAY=:99 "$MM" view "$scan" --window-size 10by10 --screenshot "$tmp/v.png"
+check "no screenshot without a display" test ! -e "$tmp/v.png"
+
 # Output errors: exit 1, nothing half-written.
 expect 1 "$tmp/nodir/means.pcd" -- "$MM" grid "$scan" --cell-size 1 --out "$tmp/nodir/means.pcd"
 expect 1 "$tmp/nodir/cells.csv" -- "$MM" grid "$scan" --cell-size 1 --cells "$tmp/nodir/cells.csv"

@@ -1,0 +1,85 @@
+// Runs `metricmap view --screenshot` (under the X server ctest gives it: xvfb-run) on a bundled
+// scan with and without octree cubes and checks the pictures: the size asked, not blank, and
+// the cubes change it.
+#include <cstdlib>
+#include <iostream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGReader.h>
+
+namespace {
+
+struct Picture {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;
+};
+
+Picture read(const std::string& path) {
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  Picture p;
+  int dims[3];
+  reader->GetOutput()->GetDimensions(dims);
+  p.width = dims[0];
+  p.height = dims[1];
+  const int comps = reader->GetOutput()->GetNumberOfScalarComponents();
+  const auto* data = static_cast<const unsigned char*>(reader->GetOutput()->GetScalarPointer());
+  for (int i = 0; i < dims[0] * dims[1]; ++i) {
+    for (int c = 0; c < 3; ++c) p.rgb.push_back(data[i * comps + c]);
+  }
+  return p;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 4) {
+    std::cerr << "usage: screenshot_test METRICMAP DATA_DIR TMP_DIR\n";
+    return 2;
+  }
+  const std::string mm = argv[1],
+                    scan = std::string(argv[2]) + "/ua_mapas_metricos_pcd/ciencias000.pcd";
+  const std::string plain = std::string(argv[3]) + "/view_plain.png";
+  const std::string cubes = std::string(argv[3]) + "/view_cubes.png";
+  const std::string common = " --up y --window-size 640x480 --camera iso";
+  if (std::system((mm + " view " + scan + common + " --screenshot " + plain).c_str()) != 0 ||
+      std::system((mm + " view " + scan + common + " --octree --max-points 100 --min-cell-size 1" +
+                   " --screenshot " + cubes)
+                      .c_str()) != 0) {
+    std::cerr << "FAIL: metricmap view exited with an error\n";
+    return 1;
+  }
+  int failures = 0;
+  const Picture a = read(plain), b = read(cubes);
+  for (const Picture* p : {&a, &b}) {
+    if (p->width != 640 || p->height != 480) {
+      std::cerr << "FAIL: size " << p->width << "x" << p->height << ", asked 640x480\n";
+      ++failures;
+    }
+    std::set<int> colours;
+    std::size_t lit = 0;
+    for (std::size_t i = 0; i + 2 < p->rgb.size(); i += 3) {
+      colours.insert(p->rgb[i] << 16 | p->rgb[i + 1] << 8 | p->rgb[i + 2]);
+      lit += (p->rgb[i] + p->rgb[i + 1] + p->rgb[i + 2]) > 150;
+    }
+    std::cout << "picture: " << colours.size() << " colours, " << lit << " bright pixels\n";
+    if (colours.size() < 20 || lit < 500) {
+      std::cerr << "FAIL: the picture looks blank\n";
+      ++failures;
+    }
+  }
+  std::size_t changed = 0;
+  for (std::size_t i = 0; i < a.rgb.size() && i < b.rgb.size(); ++i)
+    changed += a.rgb[i] != b.rgb[i];
+  std::cout << "cubes changed " << changed / 3 << " pixel channels/3\n";
+  if (changed < a.rgb.size() / 100) {
+    std::cerr << "FAIL: the cubes did not change the picture\n";
+    ++failures;
+  }
+  return failures == 0 ? 0 : 1;
+}
