@@ -10,6 +10,7 @@
 #include "pcl_peer.h"
 #include "stats_json.h"
 #include "study_config.h"
+#include "study_plot.h"
 #include "table.h"
 
 namespace metricmap::cli {
@@ -19,7 +20,7 @@ struct CompareOptions {
   std::vector<std::string> files;
   std::vector<std::string> configs;
   bool pcl_octree = false;
-  std::string format = "table", out;
+  std::string format = "table", out, plot;
 };
 
 struct Record {
@@ -118,6 +119,35 @@ std::string render(const std::vector<Record>& records, const CompareOptions& o) 
   return t.render(style);
 }
 
+void plot(const std::vector<Record>& records, const CompareOptions& o) {
+  std::vector<std::string> categories;
+  PlotPanel total{"cells / nodes in all", false, {}},
+      occupied{"occupied cells / leaves", false, {}}, empty{"empty cells / leaves", false, {}},
+      mean{"mean points per occupied cell / leaf", false, {}};
+  std::vector<double> g_total, o_total, g_occ, o_occ, g_empty, o_empty, g_mean, o_mean, p_leaves;
+  for (const Record& r : records) {
+    std::string name = r.file.substr(r.file.find_last_of('/') + 1);
+    name = name.substr(0, name.find('.')) + " " + fixed(r.config.cell_size, 1) + "/" +
+           fixed(r.config.min_cell_size, 1) + "/" + std::to_string(r.config.max_points);
+    categories.push_back(name);
+    g_total.push_back(static_cast<double>(r.grid.total_cells));
+    o_total.push_back(static_cast<double>(r.octree.total_nodes));
+    g_occ.push_back(static_cast<double>(r.grid.occupied_cells));
+    o_occ.push_back(static_cast<double>(r.octree.occupied_leaves));
+    g_empty.push_back(static_cast<double>(r.grid.empty_cells));
+    o_empty.push_back(static_cast<double>(r.octree.empty_leaves));
+    g_mean.push_back(r.grid.mean_points_per_occupied_cell);
+    o_mean.push_back(r.octree.mean_points_per_occupied_leaf);
+    p_leaves.push_back(static_cast<double>(r.pcl.leaves));
+  }
+  total.series = {{"grid", g_total}, {"octree", o_total}};
+  occupied.series = {{"grid", g_occ}, {"octree", o_occ}};
+  if (o.pcl_octree) occupied.series.push_back({"pcl::octree leaves", p_leaves});
+  empty.series = {{"grid", g_empty}, {"octree", o_empty}};
+  mean.series = {{"grid", g_mean}, {"octree", o_mean}};
+  writeStudyPlot(o.plot, categories, {total, occupied, empty, mean});
+}
+
 void runCompare(const CompareOptions& o) {
   std::vector<StudyConfig> configs;
   for (const std::string& text : o.configs) {
@@ -135,6 +165,7 @@ void runCompare(const CompareOptions& o) {
     }
   }
   emit(render(records, o), o.out);
+  if (!o.plot.empty()) plot(records, o);
 }
 
 }  // namespace
@@ -157,6 +188,8 @@ void addCompareCommand(CLI::App& app) {
                 "Also run pcl::octree::OctreePointCloudPointVector (dynamic depth) on each job");
   addFormatOption(*sub, o->format, {"table", "markdown", "csv", "json"});
   sub->add_option("--out", o->out, "Write the output to this file instead of stdout");
+  sub->add_option("--plot", o->plot,
+                  "Also draw the figures as grouped bars (.png or .svg; needs X: xvfb-run -a)");
   sub->callback([o] { runCompare(*o); });
 }
 

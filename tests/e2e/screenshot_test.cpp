@@ -1,6 +1,7 @@
 // Runs `metricmap view --screenshot` (under the X server ctest gives it: xvfb-run) on a bundled
 // scan with and without octree cubes and checks the pictures: the size asked, not blank, and
 // the cubes change it.
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <set>
@@ -73,6 +74,38 @@ int main(int argc, char** argv) {
       ++failures;
     }
   }
+  // The study plot, as PNG and as SVG.
+  const std::string scans = std::string(argv[2]) + "/ua_mapas_metricos_pcd/";
+  const std::string png = std::string(argv[3]) + "/study.png",
+                    svg = std::string(argv[3]) + "/study.svg";
+  for (const std::string& out : {png, svg}) {
+    const std::string cmd = mm + " compare " + scans + "museo000.pcd " + scans +
+                            "poli000.pcd --format csv --plot " + out + " > /dev/null";
+    if (std::system(cmd.c_str()) != 0) {
+      std::cerr << "FAIL: " << cmd << "\n";
+      ++failures;
+    }
+  }
+  const Picture plot = read(png);
+  std::set<int> plot_colours;
+  for (std::size_t i = 0; i + 2 < plot.rgb.size(); i += 3) {
+    plot_colours.insert(plot.rgb[i] << 16 | plot.rgb[i + 1] << 8 | plot.rgb[i + 2]);
+  }
+  std::cout << "plot: " << plot.width << "x" << plot.height << ", " << plot_colours.size()
+            << " colours\n";
+  if (plot.width < 200 || plot_colours.size() < 10) {
+    std::cerr << "FAIL: the study plot looks blank\n";
+    ++failures;
+  }
+  std::FILE* f = std::fopen(svg.c_str(), "r");
+  char head[512] = {0};
+  if (f == nullptr || std::fread(head, 1, sizeof head - 1, f) == 0 ||
+      std::string(head).find("<svg") == std::string::npos) {
+    std::cerr << "FAIL: " << svg << " is not an SVG\n";
+    ++failures;
+  }
+  if (f != nullptr) std::fclose(f);
+
   std::size_t changed = 0;
   for (std::size_t i = 0; i < a.rgb.size() && i < b.rgb.size(); ++i)
     changed += a.rgb[i] != b.rgb[i];

@@ -1,0 +1,110 @@
+#include "study_plot.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+
+#include <unistd.h>
+#include <vtkAxis.h>
+#include <vtkChartMatrix.h>
+#include <vtkChartXY.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkDoubleArray.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPlot.h>
+#include <vtkRenderWindow.h>
+#include <vtkSVGExporter.h>
+#include <vtkStringArray.h>
+#include <vtkTable.h>
+#include <vtkTextProperty.h>
+#include <vtkWindowToImageFilter.h>
+
+namespace metricmap::cli {
+namespace {
+
+const unsigned char kColours[][3] = {{60, 110, 200}, {220, 90, 40}, {70, 160, 80}, {150, 80, 170}};
+
+}  // namespace
+
+void writeStudyPlot(const std::string& path, const std::vector<std::string>& categories,
+                    const std::vector<PlotPanel>& panels) {
+  const char* display = std::getenv("DISPLAY");
+  if (display == nullptr || *display == '\0') {
+    throw std::runtime_error(path + ": plotting needs an X display (run under xvfb-run -a)");
+  }
+  const bool svg = path.size() > 4 && path.compare(path.size() - 4, 4, ".svg") == 0;
+  const int rows = static_cast<int>((panels.size() + 1) / 2);
+  vtkNew<vtkContextView> view;
+  view->GetRenderWindow()->SetOffScreenRendering(1);
+  view->GetRenderWindow()->SetSize(1400, 480 * rows);
+  vtkNew<vtkChartMatrix> matrix;
+  view->GetScene()->AddItem(matrix);
+  matrix->SetSize(vtkVector2i(2, rows));
+  matrix->SetGutter(vtkVector2f(70.0f, 70.0f));
+  vtkNew<vtkDoubleArray> ticks;
+  vtkNew<vtkStringArray> labels;
+  for (std::size_t c = 0; c < categories.size(); ++c) {
+    ticks->InsertNextValue(static_cast<double>(c));
+    labels->InsertNextValue(categories[c]);
+  }
+  for (std::size_t p = 0; p < panels.size(); ++p) {
+    vtkChart* chart =
+        matrix->GetChart(vtkVector2i(static_cast<int>(p % 2), rows - 1 - static_cast<int>(p / 2)));
+    auto* xy = vtkChartXY::SafeDownCast(chart);
+    chart->SetTitle(panels[p].title);
+    chart->GetTitleProperties()->SetFontSize(16);
+    chart->SetShowLegend(true);
+    vtkNew<vtkTable> table;
+    vtkNew<vtkDoubleArray> x;
+    x->SetName("x");
+    for (std::size_t c = 0; c < categories.size(); ++c) x->InsertNextValue(static_cast<double>(c));
+    table->AddColumn(x);
+    for (const auto& [name, values] : panels[p].series) {
+      vtkNew<vtkDoubleArray> col;
+      col->SetName(name.c_str());
+      for (double v : values) col->InsertNextValue(panels[p].log_scale ? std::max(v, 1.0) : v);
+      table->AddColumn(col);
+    }
+    for (std::size_t s = 0; s < panels[p].series.size(); ++s) {
+      vtkPlot* bar = chart->AddPlot(vtkChart::BAR);
+      bar->SetInputData(table, 0, static_cast<vtkIdType>(s + 1));
+      const unsigned char* c = kColours[s % 4];
+      bar->SetColor(c[0], c[1], c[2], 255);
+    }
+    if (xy != nullptr) xy->SetBarWidthFraction(0.8f);
+    vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
+    bottom->SetCustomTickPositions(ticks, labels);
+    bottom->SetTitle("");
+    bottom->GetLabelProperties()->SetOrientation(30);
+    bottom->GetLabelProperties()->SetFontSize(10);
+    vtkAxis* left = chart->GetAxis(vtkAxis::LEFT);
+    left->SetTitle("");
+    left->SetLogScale(panels[p].log_scale);
+  }
+  view->GetRenderWindow()->Render();
+  const std::string tmp = path + ".tmp-" + std::to_string(::getpid()) + (svg ? ".svg" : ".png");
+  bool ok = true;
+  if (svg) {
+    vtkNew<vtkSVGExporter> exporter;
+    exporter->SetRenderWindow(view->GetRenderWindow());
+    exporter->SetFileName(tmp.c_str());
+    exporter->Write();
+  } else {
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(view->GetRenderWindow());
+    grab->Update();
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetFileName(tmp.c_str());
+    writer->SetInputConnection(grab->GetOutputPort());
+    writer->Write();
+    ok = writer->GetErrorCode() == 0;
+  }
+  if (!ok || access(tmp.c_str(), R_OK) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error(path + ": cannot write the plot");
+  }
+}
+
+}  // namespace metricmap::cli
