@@ -1,12 +1,18 @@
 // metricmap view FILE...: points with octree leaves or grid cells, interactive or a screenshot.
+#include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <memory>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
 #include "cli_common.h"
 #include "commands.h"
+
+#include "metricmap/exceptions.h"
 #include "metricmap/grid/occupancy_grid.h"
 #include "metricmap/io/cloud_reader.h"
+#include "metricmap/io/laser_scan.h"
 #include "metricmap/octree/adaptive_octree.h"
 #include "view_scene.h"
 
@@ -19,9 +25,60 @@ struct ViewOptions {
   long long max_points = 100;
   float min_cell_size = 1.0f, cell_size = 1.0f;
   std::string color_by = "height", screenshot, window_size = "1280x800", camera = "iso", up = "z";
+  std::string segments, preset;
+  long long scan = 0;
 };
 
 using CloudRGB = pcl::PointCloud<pcl::PointXYZRGB>;
+
+/// Scan logs (.csv angle,range; CARMEN; --preset logs) become 2D clouds at z = 0.
+bool isScanLog(const std::string& f, const ViewOptions& o) {
+  return !o.preset.empty() || (f.size() > 4 && f.compare(f.size() - 4, 4, ".csv") == 0) ||
+         looksLikeCarmen(f);
+}
+
+void loadScanLog(const std::string& f, const ViewOptions& o, CloudRGB& out) {
+  const ScanLog log = !o.preset.empty()    ? readScanLines(f, urg04lxMinesFormat())
+                      : looksLikeCarmen(f) ? readCarmenLog(f)
+                                           : readAngleRangeCsv(f);
+  if (static_cast<std::size_t>(o.scan) >= log.scans.size()) {
+    throw std::invalid_argument("--scan " + std::to_string(o.scan) + " is out of range: " + f +
+                                " has " + std::to_string(log.scans.size()) + " scan(s)");
+  }
+  for (const auto& p : scanToCloud(log.scans[static_cast<std::size_t>(o.scan)])) {
+    if (!std::isfinite(p.x)) continue;
+    pcl::PointXYZRGB q;
+    q.x = p.x;
+    q.y = p.y;
+    q.z = 0.0f;
+    q.r = q.g = q.b = 200;
+    out.push_back(q);
+  }
+}
+
+/// Segments of scan --scan from `metricmap lines --format json`.
+std::vector<DrawnSegment> readSegments(const std::string& path, long long scan) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open");
+  try {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    for (const auto& s : j.at("scans")) {
+      if (s.at("scan").get<long long>() != scan) continue;
+      std::vector<DrawnSegment> out;
+      for (const auto& seg : s.at("segments")) {
+        out.push_back({Eigen::Vector2d(seg.at("start").at(0).get<double>(),
+                                       seg.at("start").at(1).get<double>()),
+                       Eigen::Vector2d(seg.at("end").at(0).get<double>(),
+                                       seg.at("end").at(1).get<double>())});
+      }
+      return out;
+    }
+  } catch (const std::exception& e) {
+    throw InputError(path + ": not the JSON of metricmap lines (" +
+                     std::string(e.what()).substr(0, 60) + ")");
+  }
+  throw InputError(path + ": has no scan " + std::to_string(scan));
+}
 
 void run(const ViewOptions& o) {
   int width = 0, height = 0;
@@ -43,11 +100,25 @@ void run(const ViewOptions& o) {
         "still needs an X server)");
   }
   auto cloud = std::make_shared<CloudRGB>();
+  std::string title_suffix;
+  bool scan_logs_only = true;
   for (const std::string& f : o.files) {
     CloudRGB part;
-    const LoadReport r = loadCloud(f, part);
-    for (const auto& w : r.warnings) std::cerr << "warning: " << w << "\n";
+    if (isScanLog(f, o)) {
+      loadScanLog(f, o, part);
+    } else {
+      scan_logs_only = false;
+      const LoadReport r = loadCloud(f, part);
+      for (const auto& w : r.warnings) std::cerr << "warning: " << w << "\n";
+    }
     *cloud += part;
+  }
+  const std::vector<DrawnSegment> segments =
+      o.segments.empty() ? std::vector<DrawnSegment>() : readSegments(o.segments, o.scan);
+  if (!segments.empty()) {
+    // Segments live in a scan's plane: look at it from above.
+    title_suffix =
+        " | " + std::to_string(segments.size()) + " segments (scan " + std::to_string(o.scan) + ")";
   }
   std::ostringstream title;
   title << (o.files.size() == 1 ? o.files.front() : std::to_string(o.files.size()) + " files")
@@ -86,11 +157,12 @@ void run(const ViewOptions& o) {
           << " occupied cells";
   }
   SceneOptions so;
-  so.title = title.str();
-  so.color_by = o.color_by;
+  so.title = title.str() + title_suffix;
+  // A 2D scan is flat: height colouring would paint it one colour; use its light grey.
+  so.color_by = scan_logs_only && o.color_by == "height" ? "rgb" : o.color_by;
   so.up_axis = o.up == "x" ? 0 : (o.up == "y" ? 1 : 2);
-  so.camera = o.camera;
-  const Scene scene = buildScene(*cloud, point_counts, boxes, so);
+  so.camera = segments.empty() ? o.camera : "top";
+  const Scene scene = buildScene(*cloud, point_counts, boxes, so, segments);
   if (!o.screenshot.empty()) {
     writeScreenshot(scene, width, height, o.screenshot);
   } else {
@@ -123,6 +195,12 @@ void addViewCommand(CLI::App& app) {
   sub->add_option("--up", o->up, "Axis that is up (the study's scans: y)")
       ->check(CLI::IsMember({"x", "y", "z"}))
       ->capture_default_str();
+  sub->add_option("--segments", o->segments,
+                  "Draw the segments of `metricmap lines --format json` (scan --scan) at z = 0");
+  sub->add_option("--scan", o->scan, "Scan of a scan log and of --segments (0-based)")
+      ->check(kCount);
+  sub->add_option("--preset", o->preset, "FILE is a scan-per-line log of this layout")
+      ->check(CLI::IsMember({"urg04lx-mines"}));
   sub->add_option("--screenshot", o->screenshot, "Render offscreen to this PNG and exit");
   sub->add_option("--window-size", o->window_size, "WxH")->capture_default_str();
   sub->add_option("--camera", o->camera, "Initial view")

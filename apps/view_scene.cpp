@@ -1,5 +1,6 @@
 #include "view_scene.h"
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <stdexcept>
@@ -9,6 +10,7 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkLookupTable.h>
@@ -111,6 +113,43 @@ vtkSmartPointer<vtkActor> boxActor(const std::vector<CountedBox>& boxes, vtkLook
   return actor;
 }
 
+/// Segments as thick lines at z = 0, one colour each (golden-angle hues), endpoints as points.
+vtkSmartPointer<vtkActor> segmentActor(const std::vector<DrawnSegment>& segments) {
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkUnsignedCharArray> colours;
+  colours->SetNumberOfComponents(3);
+  for (std::size_t k = 0; k < segments.size(); ++k) {
+    const vtkIdType a = pts->InsertNextPoint(segments[k].start.x(), segments[k].start.y(), 0.0);
+    const vtkIdType b = pts->InsertNextPoint(segments[k].end.x(), segments[k].end.y(), 0.0);
+    const vtkIdType ids[2] = {a, b};
+    lines->InsertNextCell(2, ids);
+    const double h = std::fmod(static_cast<double>(k) * 0.38197, 1.0);
+    double rgb[3];
+    vtkNew<vtkLookupTable> hue;
+    hue->SetHueRange(h, h);
+    hue->Build();
+    hue->GetColor(0.0, rgb);
+    unsigned char c[3] = {static_cast<unsigned char>(255 * rgb[0]),
+                          static_cast<unsigned char>(255 * rgb[1]),
+                          static_cast<unsigned char>(255 * rgb[2])};
+    colours->InsertNextTypedTuple(c);
+  }
+  vtkNew<vtkPolyData> poly;
+  poly->SetPoints(pts);
+  poly->SetLines(lines);
+  poly->GetCellData()->SetScalars(colours);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(poly);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetLineWidth(4);
+  actor->GetProperty()->SetPointSize(8);
+  actor->GetProperty()->SetRenderPointsAsSpheres(true);
+  actor->GetProperty()->SetVertexVisibility(true);
+  return actor;
+}
+
 void placeCamera(vtkRenderer* r, const SceneOptions& o) {
   vtkCamera* cam = r->GetActiveCamera();
   Eigen::Vector3d up = Eigen::Vector3d::Zero();
@@ -139,7 +178,8 @@ void placeCamera(vtkRenderer* r, const SceneOptions& o) {
 }  // namespace
 
 Scene buildScene(const pcl::PointCloud<pcl::PointXYZRGB>& cloud, const std::vector<double>& counts,
-                 const std::vector<CountedBox>& boxes, const SceneOptions& o) {
+                 const std::vector<CountedBox>& boxes, const SceneOptions& o,
+                 const std::vector<DrawnSegment>& segments) {
   Scene s;
   s.renderer = vtkSmartPointer<vtkRenderer>::New();
   s.renderer->SetBackground(0.08, 0.08, 0.1);
@@ -158,6 +198,7 @@ Scene buildScene(const pcl::PointCloud<pcl::PointXYZRGB>& cloud, const std::vect
     bar->SetMaximumWidthInPixels(70);
     s.renderer->AddActor2D(bar);
   }
+  if (!segments.empty()) s.renderer->AddActor(segmentActor(segments));
   vtkNew<vtkTextActor> title;
   title->SetInput(o.title.c_str());
   title->GetTextProperty()->SetFontSize(16);

@@ -36,11 +36,16 @@ struct Scene {
   vtkSmartPointer<vtkActor> boxes;  ///< null without boxes
 };
 
+/// \brief A 2D segment to draw at z = 0 (from `metricmap lines --format json`).
+struct DrawnSegment {
+  Eigen::Vector2d start, end;
+};
+
 /// \brief Build the scene. `point_counts` (same length as the cloud, or empty) colours points
 /// by the count of their cell when color_by is "count".
 Scene buildScene(const pcl::PointCloud<pcl::PointXYZRGB>& cloud,
                  const std::vector<double>& point_counts, const std::vector<CountedBox>& boxes,
-                 const SceneOptions& options);
+                 const SceneOptions& options, const std::vector<DrawnSegment>& segments = {});
 
 /// \brief Render offscreen at width x height and write a PNG (through a temporary file).
 /// \throws std::runtime_error naming the file

@@ -130,6 +130,7 @@ expect 2 "--refine" -- "$MM" kitti "$kr" --frames 0 --refine ndt
 # view without an X display: a clear message, not a crash.
 expect 1 "no X display" -- env -u DISPLAY "$MM" view "$scan" --screenshot "$tmp/v.png"
 expect 1 "no X display" -- env -u DISPLAY "$MM" view "$scan"
+expect 1 "no X display" -- env -u DISPLAY "$MM" view "$DATA/pythonrobotics_lidar01/lidar01.csv" --segments "$tmp/none.json"
 expect 2 "--window-size" -- env DISPLAY=:99 "$MM" view "$scan" --window-size 10by10 --screenshot "$tmp/v.png"
 check "no screenshot without a display" test ! -e "$tmp/v.png"
 

@@ -74,6 +74,32 @@ int main(int argc, char** argv) {
       ++failures;
     }
   }
+  // Split & Merge segments over a 2D scan.
+  const std::string csv = std::string(argv[2]) + "/pythonrobotics_lidar01/lidar01.csv";
+  const std::string json = std::string(argv[3]) + "/lidar01_lines.json";
+  const std::string scan_only = std::string(argv[3]) + "/view_scan.png";
+  const std::string with_segments = std::string(argv[3]) + "/view_segments.png";
+  if (std::system((mm + " lines " + csv + " --format json > " + json).c_str()) != 0 ||
+      std::system(
+          (mm + " view " + csv + " --window-size 640x480 --screenshot " + scan_only).c_str()) !=
+          0 ||
+      std::system((mm + " view " + csv + " --segments " + json +
+                   " --window-size 640x480 --screenshot " + with_segments)
+                      .c_str()) != 0) {
+    std::cerr << "FAIL: view --segments\n";
+    ++failures;
+  } else {
+    const Picture s0 = read(scan_only), s1 = read(with_segments);
+    std::size_t diff = 0;
+    for (std::size_t i = 0; i < s0.rgb.size() && i < s1.rgb.size(); ++i)
+      diff += s0.rgb[i] != s1.rgb[i];
+    std::cout << "segments changed " << diff / 3 << " pixel channels/3\n";
+    if (diff < s0.rgb.size() / 200) {
+      std::cerr << "FAIL: the segments did not change the picture\n";
+      ++failures;
+    }
+  }
+
   // The study plot, as PNG and as SVG.
   const std::string scans = std::string(argv[2]) + "/ua_mapas_metricos_pcd/";
   const std::string png = std::string(argv[3]) + "/study.png",
