@@ -6,9 +6,9 @@
 #include <unistd.h>
 #include <vtkImageCanvasSource2D.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 
 #include "scan_view.h"
+#include "vtk_png.h"
 
 namespace metricmap::cli {
 
@@ -51,15 +51,7 @@ void writeScanPng(const std::string& path, const pcl::PointCloud<pcl::PointXYZ>&
   canvas->FillBox(bar_x0, bar_x0 + static_cast<int>(std::lround(v.scale)), bar_y - 1, bar_y + 1);
   canvas->Update();
 
-  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(tmp.c_str());
-  writer->SetInputConnection(canvas->GetOutputPort());
-  writer->Write();
-  if (writer->GetErrorCode() != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": cannot write PNG");
-  }
+  writeVtkPng(canvas->GetOutputPort(), path);
 }
 
 }  // namespace metricmap::cli

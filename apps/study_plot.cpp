@@ -1,5 +1,7 @@
 #include "study_plot.h"
 
+#include "vtk_png.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
@@ -12,7 +14,6 @@
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 #include <vtkPlot.h>
 #include <vtkRenderWindow.h>
 #include <vtkSVGExporter.h>
@@ -84,24 +85,19 @@ void writeStudyPlot(const std::string& path, const std::vector<std::string>& cat
     left->SetLogScale(panels[p].log_scale);
   }
   view->GetRenderWindow()->Render();
-  const std::string tmp = path + ".tmp-" + std::to_string(::getpid()) + (svg ? ".svg" : ".png");
-  bool ok = true;
-  if (svg) {
-    vtkNew<vtkSVGExporter> exporter;
-    exporter->SetRenderWindow(view->GetRenderWindow());
-    exporter->SetFileName(tmp.c_str());
-    exporter->Write();
-  } else {
+  if (!svg) {
     vtkNew<vtkWindowToImageFilter> grab;
     grab->SetInput(view->GetRenderWindow());
     grab->Update();
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetFileName(tmp.c_str());
-    writer->SetInputConnection(grab->GetOutputPort());
-    writer->Write();
-    ok = writer->GetErrorCode() == 0;
+    writeVtkPng(grab->GetOutputPort(), path);
+    return;
   }
-  if (!ok || access(tmp.c_str(), R_OK) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
+  const std::string tmp = path + ".tmp-" + std::to_string(::getpid()) + ".svg";
+  vtkNew<vtkSVGExporter> exporter;
+  exporter->SetRenderWindow(view->GetRenderWindow());
+  exporter->SetFileName(tmp.c_str());
+  exporter->Write();
+  if (access(tmp.c_str(), R_OK) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
     std::remove(tmp.c_str());
     throw std::runtime_error(path + ": cannot write the plot");
   }

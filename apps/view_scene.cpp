@@ -1,5 +1,7 @@
 #include "view_scene.h"
 
+#include "vtk_png.h"
+
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -15,7 +17,6 @@
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -219,15 +220,7 @@ void writeScreenshot(const Scene& scene, int width, int height, const std::strin
   grab->SetInput(window);
   grab->ReadFrontBufferOff();
   grab->Update();
-  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(tmp.c_str());
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->Write();
-  if (writer->GetErrorCode() != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": cannot write the screenshot");
-  }
+  writeVtkPng(grab->GetOutputPort(), path);
 }
 
 void runInteractive(const Scene& scene, int width, int height) {
