@@ -29,6 +29,7 @@ using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 struct KittiOptions {
   std::string root, sequence = "00", frames, world = "camera", out_cloud, out_map;
   std::string pcd_format = "binary", map_plane = "xz", format = "table", refine, perturb;
+  std::string refine_target = "map", out_poses;
   unsigned seed = 1;
   long long first = -1, count = 0, min_hits = 1;
   double min_range = 0.0, max_range = std::numeric_limits<double>::infinity();
@@ -48,20 +49,6 @@ std::vector<std::size_t> selectFrames(const KittiOptions& o) {
   std::vector<std::size_t> f;
   for (long long i = 0; i < o.count; ++i) f.push_back(static_cast<std::size_t>(o.first + i));
   return f;
-}
-
-/// Points that constrain registration: 3-40 m away and above the ground (z_velo > -1.3 m; the
-/// HDL-64E sits 1.73 m up). The ground's rings travel with the sensor and pull ICP towards zero
-/// motion, so they are left out of both source and target.
-Cloud::Ptr registrationPoints(const Cloud& velo) {
-  auto out = std::make_shared<Cloud>();
-  for (const auto& p : velo) {
-    const float r = p.getVector3fMap().norm();
-    if (r > 3.0f && r < 40.0f && p.z > -1.3f) out->push_back(p);
-  }
-  out->width = static_cast<std::uint32_t>(out->size());
-  out->height = 1;
-  return out;
 }
 
 Cloud voxelize(const Cloud::Ptr& cloud, double voxel) {
@@ -107,6 +94,7 @@ void run(const KittiOptions& o) {
   auto target = std::make_shared<Cloud>();
   nlohmann::json registration = nlohmann::json::array();
   double reg_s = 0.0, sq_before = 0.0, sq_after = 0.0;
+  std::string poses_text;
   for (std::size_t k = 0; k < frames.size(); ++k) {
     auto t = std::chrono::steady_clock::now();
     Cloud scan;
@@ -136,9 +124,7 @@ void run(const KittiOptions& o) {
       Eigen::Isometry3d refined = pose;
       if (!o.refine.empty() && k > 0) {
         const auto t_reg = std::chrono::steady_clock::now();
-        const RefineResult r =
-            refineScanPose(std::make_shared<Cloud>(voxelize(registrationPoints(*world_scan), 0.2)),
-                           target, pose, refine);
+        const RefineResult r = refineScanPose(registrationCloud(*world_scan), target, pose, refine);
         reg_s += secondsSince(t_reg);
         refined = r.scan_to_world;
         const PoseError correction = poseError(pose, refined);
@@ -156,11 +142,26 @@ void run(const KittiOptions& o) {
       pose = refined;
     }
     pcl::transformPointCloud(*world_scan, *world_scan, pose.matrix().cast<float>());
-    if (!o.refine.empty()) {
+    if (!o.refine.empty() && (k == 0 || o.refine_target != "first")) {
       Cloud structure;
-      pcl::transformPointCloud(*registrationPoints(scan), structure, pose.matrix().cast<float>());
-      *target += structure;
-      *target = voxelize(target, 0.2);
+      pcl::transformPointCloud(*registrationCloud(scan), structure, pose.matrix().cast<float>());
+      if (o.refine_target == "map") {
+        *target += structure;
+        *target = voxelize(target, 0.2);
+      } else {
+        *target = structure;
+      }
+    }
+    if (!o.out_poses.empty()) {  // KITTI's convention: camera 0 poses, or velodyne ones
+      const Eigen::Isometry3d out = world == KittiWorld::Camera ? pose * tr.inverse() : pose;
+      for (int row = 0; row < 3; ++row) {
+        for (int col = 0; col < 4; ++col) {
+          char num[32];
+          std::snprintf(num, sizeof num, "%.9e", out.matrix()(row, col));
+          poses_text += (row || col ? " " : "") + std::string(num);
+        }
+      }
+      poses_text += "\n";
     }
     if (o.voxel > 0.0) *world_scan = voxelize(world_scan, o.voxel);
     kept += world_scan->size();
@@ -187,6 +188,7 @@ void run(const KittiOptions& o) {
   if (progress) std::fprintf(stderr, "\n");
 
   auto t = std::chrono::steady_clock::now();
+  if (!o.out_poses.empty()) writeTextAtomic(o.out_poses, poses_text);
   if (!o.out_cloud.empty()) {
     if (o.voxel > 0.0) *global = voxelize(global, o.voxel);
     savePcdAtomic(o.out_cloud, *global, parsePcdFormat(o.pcd_format));
@@ -206,6 +208,7 @@ void run(const KittiOptions& o) {
   if (!registration.empty()) {
     const double n = static_cast<double>(registration.size());
     reg_summary = {{"method", o.refine.empty() ? "none" : o.refine},
+                   {"target", o.refine_target},
                    {"perturb", {perturb_t, perturb_r}},
                    {"seed", o.seed},
                    {"frames", registration},
@@ -284,9 +287,16 @@ void addKittiCommand(CLI::App& app) {
       ->check(kCount & kFinitePositive)
       ->capture_default_str();
   sub->add_option("--refine", o->refine,
-                  "Align each scan to the map built so far (pcl::IterativeClosestPoint or "
+                  "Align each scan to --refine-target (pcl::IterativeClosestPoint or "
                   "pcl::GeneralizedIterativeClosestPoint), starting from its pose")
       ->check(CLI::IsMember({"icp", "gicp"}));
+  sub->add_option("--refine-target", o->refine_target,
+                  "map: the refined scans so far; previous: the last scan; first: frame 0 only")
+      ->check(CLI::IsMember({"map", "previous", "first"}))
+      ->capture_default_str();
+  sub->add_option("--out-poses", o->out_poses,
+                  "Write the poses used (refined, perturbed or given), one 3x4 row-major line "
+                  "per frame as in poses/NN.txt (velodyne poses with --world velodyne)");
   sub->add_option("--perturb", o->perturb,
                   "t,r: move each pose after frame 0 by t metres and turn it by r degrees, "
                   "random directions (seeded)")

@@ -188,3 +188,99 @@ TEST(KittiRegistration, IcpAndGicpRecoverAKnownTransformOfARealScan) {
 }
 
 }  // namespace metricmap
+
+namespace metricmap {
+
+// Acceptance 2's question (does ICP correct a 0.5 m / 2 degree pose error?) asked of what the
+// scans themselves say: every frame 1-5, registered to frame 0 from its ground-truth pose
+// perturbed by 0.5 m and 2 degrees, must land within 0.1 m and 0.3 degrees of the pose the same
+// registration reaches from the unperturbed ground truth. (The ground truth itself is not the
+// oracle here: for frames 0-14 of sequence 00 it is a constant-velocity track that the scans
+// contradict, see docs/KITTI.md and the next test.)
+TEST(KittiRegistration, PerturbedPosesConvergeToTheUnperturbedSolution) {
+  const Eigen::Isometry3d tr = readKittiCalibTr(kSeq.calib());
+  const auto poses = readKittiPoses(kSeq.poses(), 6);
+  auto velo = [&](std::size_t f) {
+    Cloud scan;
+    loadCloud(kSeq.scan(f), scan);
+    return scan;
+  };
+  auto target = std::make_shared<Cloud>();
+  pcl::transformPointCloud(*registrationCloud(velo(0)), *target,
+                           (poses[0] * tr).matrix().cast<float>());
+  std::mt19937 rng(11);
+  for (RefineMethod method : {RefineMethod::Icp, RefineMethod::Gicp}) {
+    RefineParams p;
+    p.method = method;
+    for (std::size_t f = 1; f <= 5; ++f) {
+      const auto source = registrationCloud(velo(f));
+      const Eigen::Isometry3d truth = poses[f] * tr;
+      const RefineResult from_truth = refineScanPose(source, target, truth, p);
+      const RefineResult from_noise =
+          refineScanPose(source, target, perturbPose(truth, 0.5, 2.0, rng), p);
+      const PoseError e = poseError(from_truth.scan_to_world, from_noise.scan_to_world);
+      const char* name = method == RefineMethod::Icp ? "icp" : "gicp";
+      EXPECT_TRUE(from_noise.converged) << name << " frame " << f;
+      EXPECT_LT(e.translation, 0.1) << name << " frame " << f;
+      EXPECT_LT(e.rotation_deg, 0.3) << name << " frame " << f;
+    }
+  }
+}
+
+}  // namespace metricmap
+
+namespace metricmap {
+
+// The finding that keeps acceptance 2 of the KITTI issue open, kept true by a test: the
+// ground truth of sequence 00 moves exactly 0.860 m per frame for frames 0-14 (a
+// constant-velocity track; from frame 15 on it varies), while the scans fit each other best at
+// about 0.8 of that motion. The scan check is a plain sweep along the ground-truth relative
+// motion, independent of the registration code: the median nearest-neighbour distance of
+// scan 1's structure points to scan 0's.
+TEST(KittiData, GroundTruthOfFrames0To14IsConstantVelocityAndTheScansDisagree) {
+  const auto poses = readKittiPoses(kSeq.poses(), 41);
+  for (std::size_t f = 1; f < 41; ++f) {
+    const double step = (poses[f].translation() - poses[f - 1].translation()).norm();
+    if (f <= 14) EXPECT_NEAR(step, 0.860, 0.002) << "frame " << f;
+    if (f >= 20) EXPECT_GT(step, 0.89) << "frame " << f;  // the car speeds up, 0.90 -> 1.06 m
+  }
+  const Eigen::Isometry3d tr = readKittiCalibTr(kSeq.calib());
+  Cloud s0, s1;
+  loadCloud(kSeq.scan(0), s0);
+  loadCloud(kSeq.scan(1), s1);
+  auto structure = [](const Cloud& c) {
+    auto out = std::make_shared<Cloud>();
+    for (const auto& p : c) {
+      const float r = std::hypot(p.x, p.y);
+      if (r > 3.0f && r < 40.0f && p.z > -1.3f) out->push_back(p);
+    }
+    return out;
+  };
+  const auto a = structure(s0), b = structure(s1);
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud(a);
+  const Eigen::Isometry3d rel = tr.inverse() * poses[0].inverse() * poses[1] * tr;
+  double best_scale = 0.0, best = 1e9;
+  for (int i = 50; i <= 120; i += 2) {
+    Eigen::Isometry3d t = rel;
+    t.translation() *= i / 100.0;
+    Cloud moved;
+    pcl::transformPointCloud(*b, moved, t.matrix().cast<float>());
+    std::vector<float> d;
+    pcl::Indices idx(1);
+    std::vector<float> sq(1);
+    for (std::size_t k = 0; k < moved.size(); k += 3) {
+      tree.nearestKSearch(moved[k], 1, idx, sq);
+      d.push_back(sq[0]);
+    }
+    std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
+    if (d[d.size() / 2] < best) {
+      best = d[d.size() / 2];
+      best_scale = i / 100.0;
+    }
+  }
+  EXPECT_GT(best_scale, 0.70);
+  EXPECT_LT(best_scale, 0.90);  // 0.86 m by the poses, about 0.68 m by the scans
+}
+
+}  // namespace metricmap

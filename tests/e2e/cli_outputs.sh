@@ -88,4 +88,11 @@ check "kitti --refine icp --perturb reports per-frame errors and the ATE" bash -
   >'$tmp/reg.json' && grep -q '\"ate_after\"' '$tmp/reg.json' && grep -q '\"correction\"' '$tmp/reg.json'"
 check "--perturb moves each later pose by exactly 0.5 m" bash -c \
   "grep -A3 error_before '$tmp/reg.json' | grep -c '\"translation\": 0.5' | grep -qx 2"
+check "--out-poses without --refine writes the ground-truth poses back" bash -c "'$MM' kitti \
+  '$kitti' --frames 0-5 --out-poses '$tmp/poses.txt' >/dev/null && head -n 6 '$kitti/poses/00.txt' | \
+  paste -d' ' - '$tmp/poses.txt' | awk '{for(i=1;i<=12;i++){d=\$i-\$(i+12); if(d<0)d=-d; if(d>1e-6) exit 1}}\
+  END{exit NR!=6}'"
+check "--refine-target first aligns to frame 0 and says so" bash -c "'$MM' kitti '$kitti' \
+  --frames 0-2 --refine icp --refine-target first --out-poses '$tmp/rp.txt' --format json \
+  >'$tmp/rf.json' && grep -q '\"target\": \"first\"' '$tmp/rf.json' && test \$(wc -l <'$tmp/rp.txt') -eq 3"
 finish

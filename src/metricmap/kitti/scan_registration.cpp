@@ -6,6 +6,8 @@
 #include <pcl/registration/gicp.h>
 #include <pcl/registration/icp.h>
 
+#include "metricmap/grid/occupancy_grid.h"
+
 namespace metricmap {
 namespace {
 
@@ -49,6 +51,24 @@ RefineMethod parseRefineMethod(const std::string& name) {
   if (name == "icp") return RefineMethod::Icp;
   if (name == "gicp") return RefineMethod::Gicp;
   throw std::invalid_argument("refine method must be icp or gicp, got '" + name + "'");
+}
+
+pcl::PointCloud<pcl::PointXYZ>::Ptr registrationCloud(const pcl::PointCloud<pcl::PointXYZ>& velo,
+                                                      float voxel) {
+  auto structure = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  for (const auto& p : velo) {
+    const float r = p.getVector3fMap().norm();
+    if (r > 3.0f && r < 40.0f && p.z > -1.3f) structure->push_back(p);
+  }
+  structure->width = static_cast<std::uint32_t>(structure->size());
+  structure->height = 1;
+  OccupancyGrid<pcl::PointXYZ> grid;
+  grid.setOrigin(GridOrigin::WorldAligned);
+  grid.setCellSize(voxel);
+  grid.setInputCloud(structure);
+  auto out = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  grid.filter(*out);
+  return out;
 }
 
 RefineResult refineScanPose(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& scan,

@@ -29,6 +29,13 @@ struct RefineResult {
   double fitness = 0.0;  ///< PCL's mean squared distance of the last correspondences
 };
 
+/// \brief The part of a velodyne scan (its own frame, z up) that registration uses: points
+/// 3-40 m away and above the ground (z > -1.3 m; the HDL-64E sits 1.73 m up), averaged in
+/// `voxel` cells with OccupancyGrid (WorldAligned). The ground's rings travel with the sensor and
+/// pull point matching towards zero motion, so they are left out.
+pcl::PointCloud<pcl::PointXYZ>::Ptr registrationCloud(const pcl::PointCloud<pcl::PointXYZ>& velo,
+                                                      float voxel = 0.2f);
+
 /// \brief Align `scan` (its own frame) to `target` (world), starting from `initial`.
 RefineResult refineScanPose(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& scan,
                             const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& target,
