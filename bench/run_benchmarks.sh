@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 cmake -S . -B build/bench -DCMAKE_BUILD_TYPE=Release -DMETRICMAP_BUILD_BENCH=ON \
       -DMETRICMAP_BUILD_TESTS=OFF -DMETRICMAP_BUILD_APPS=OFF >/dev/null
 cmake --build build/bench -j "${JOBS:-2}" --target metricmap_bench >/dev/null
-for b in BM_DataOnly BM_OccupancyGrid BM_OccupancyGridFresh BM_PclVoxelGrid \
+for b in BM_DataOnly BM_OccupancyGrid BM_OccupancyGridFresh BM_PclVoxelGrid BM_SortBasedGridFloor \
          BM_AdaptiveOctree BM_AdaptiveOctreeFresh BM_PclOctreeDynamicDepth \
          BM_SplitAndMergeUrg BM_SequentialRansacUrg BM_HeightMapKinectFrame \
          BM_DepthToCloudKinectFrame BM_KittiScanTransformAccumulateMap; do
