@@ -241,8 +241,12 @@ TEST(KittiData, GroundTruthOfFrames0To14IsConstantVelocityAndTheScansDisagree) {
   const auto poses = readKittiPoses(kSeq.poses(), 41);
   for (std::size_t f = 1; f < 41; ++f) {
     const double step = (poses[f].translation() - poses[f - 1].translation()).norm();
-    if (f <= 14) EXPECT_NEAR(step, 0.860, 0.002) << "frame " << f;
-    if (f >= 20) EXPECT_GT(step, 0.89) << "frame " << f;  // the car speeds up, 0.90 -> 1.06 m
+    if (f <= 14) {
+      EXPECT_NEAR(step, 0.860, 0.002) << "frame " << f;
+    }
+    if (f >= 20) {
+      EXPECT_GT(step, 0.89) << "frame " << f;  // the car speeds up, 0.90 -> 1.06 m
+    }
   }
   const Eigen::Isometry3d tr = readKittiCalibTr(kSeq.calib());
   Cloud s0, s1;
