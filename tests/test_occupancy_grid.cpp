@@ -101,6 +101,14 @@ TEST(OccupancyGrid, MatchesExactRecountOnDecimalData) {
   }
 }
 
+TEST(OccupancyGrid, MatchesExactRecountOnAWideGrid) {
+  // 4 km at 1 cm: 56-bit keys, which do not pack with 15-bit positions into one word, so the
+  // (key, position) pair sort runs; every point lies on a cell boundary.
+  checkAgainstRecount(randomLattice(20000, 4000000, -1234567, 10, 4), 1000, 10);
+  // 4 km at 10 cm: 46-bit keys packed with the positions.
+  checkAgainstRecount(randomLattice(20000, 4000000, -1234567, 10, 5), 1000, 100);
+}
+
 TEST(OccupancyGrid, MatchesExactRecountOnDyadicData) {
   for (long long cell : {16, 24, 64}) {
     checkAgainstRecount(randomLattice(5000, 6400, -3200, 1, 3), 64, cell);
