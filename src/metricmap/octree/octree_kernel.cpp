@@ -229,20 +229,21 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
     sums[id] = Eigen::Vector3d(sx, sy, sz);
     s.points += node.count;
   }
-  for (const OctreeNode& node : r.nodes) {
+  // One sweep from the last node back: children come after their parents, so a node's sum is
+  // complete when the sweep reaches it (then it is passed on to the parent).
+  for (std::size_t id = r.nodes.size(); id-- > 0;) {
+    OctreeNode& node = r.nodes[id];
     s.max_depth = std::max(s.max_depth, node.depth);
     if (!node.isLeaf()) {
       ++s.internal_nodes;
     } else if (node.count == 0) {
       ++s.empty_leaves;
     }
+    if (node.count > 0) node.mean = sums[id] / static_cast<double>(node.count);
+    if (id > 0) sums[node.parent] += sums[id];
   }
   s.occupied_leaves = r.occupied_leaves.size();
   s.leaf_nodes = s.occupied_leaves + s.empty_leaves;
-  for (std::size_t id = r.nodes.size(); id-- > 1;) sums[r.nodes[id].parent] += sums[id];
-  for (std::size_t id = 0; id < r.nodes.size(); ++id) {
-    if (r.nodes[id].count > 0) r.nodes[id].mean = sums[id] / static_cast<double>(r.nodes[id].count);
-  }
   s.total_nodes = r.nodes.size();
   if (s.occupied_leaves > 0) {
     s.mean_points_per_occupied_leaf =
