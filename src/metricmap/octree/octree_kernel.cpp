@@ -10,6 +10,10 @@
 #include "metricmap/common/fast_floor.h"
 #include "metricmap/exceptions.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace metricmap {
 namespace {
 
@@ -107,6 +111,59 @@ bool insideRoot(const float* p, const Frame& f) {
   return true;
 }
 
+/// The Morton keys of a whole cloud of >= 16-byte points when every level is in the breakpoint
+/// tables and no axis is flat: the table position is estimated for x, y, z at once in SSE2
+/// float arithmetic and then settled exactly against the tables in double, as quantize() does
+/// (the settled position does not depend on the estimate). False when it does not apply.
+bool mortonKeysFast(const PointSpan& points, const Frame& f, const OctreeParams& params,
+                    KeySorter& sorter) {
+#if defined(__SSE2__)
+  if (points.indices != nullptr || points.stride < 16 || params.has_root_box ||
+      f.table_levels != f.levels || f.levels > 16) {
+    return false;
+  }
+  for (int a = 0; a < 3; ++a) {
+    if (!(f.max[a] > f.min[a])) return false;
+  }
+  static const std::array<std::uint64_t, 256> spread8 = [] {
+    std::array<std::uint64_t, 256> t{};
+    for (std::uint64_t i = 0; i < 256; ++i) t[i] = spreadBits(i);
+    return t;
+  }();
+  const std::size_t top = f.breaks[0].size() - 2;
+  const __m128 vmin = _mm_setr_ps(static_cast<float>(f.min[0]), static_cast<float>(f.min[1]),
+                                  static_cast<float>(f.min[2]), 0.0f);
+  const __m128 vscale = _mm_setr_ps(static_cast<float>(f.scale[0]), static_cast<float>(f.scale[1]),
+                                    static_cast<float>(f.scale[2]), 0.0f);
+  const __m128 vtop = _mm_set1_ps(static_cast<float>(top));
+  const __m128 zero = _mm_setzero_ps();
+  const double* breaks[3] = {f.breaks[0].data(), f.breaks[1].data(), f.breaks[2].data()};
+  const char* base = reinterpret_cast<const char*>(points.base);
+  for (std::size_t i = 0; i < points.size; ++i) {
+    const float* p = reinterpret_cast<const float*>(base + i * points.stride);
+    const __m128 v = _mm_loadu_ps(p);
+    if ((_mm_movemask_ps(_mm_cmpeq_ps(_mm_sub_ps(v, v), zero)) & 7) != 7) continue;
+    const __m128 e = _mm_min_ps(_mm_max_ps(_mm_mul_ps(_mm_sub_ps(v, vmin), vscale), zero), vtop);
+    alignas(16) std::int32_t est[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(est), _mm_cvttps_epi32(e));
+    std::uint64_t key = 0;
+    for (int a = 0; a < 3; ++a) {
+      const double* b = breaks[a];
+      const double pd = p[a];
+      auto j = static_cast<std::size_t>(est[a]);
+      while (j < top && b[j + 1] <= pd) ++j;
+      while (j > 0 && b[j] > pd) --j;
+      key |= (spread8[j & 255] | spread8[(j >> 8) & 255] << 24) << a;
+    }
+    sorter.push(key, static_cast<std::uint32_t>(i));
+  }
+  return true;
+#else
+  (void)points, (void)f, (void)params, (void)sorter;
+  return false;
+#endif
+}
+
 }  // namespace
 
 void validateOctreeParams(const OctreeParams& params) {
@@ -142,12 +199,14 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
   // Morton keys of the points inside the root at leaf level `frame.levels`, radix-sorted.
   KeySorter& sorter = workspace.sorter;
   sorter.reset(points.size, 3 * static_cast<int>(frame.levels));
-  for (std::size_t i = 0; i < points.size; ++i) {
-    const float* p = points.at(i);
-    if (!isFinitePoint(p) || (params.has_root_box && !insideRoot(p, frame))) continue;
-    sorter.push(spreadBits(frame.quantize(0, p[0])) | spreadBits(frame.quantize(1, p[1])) << 1 |
-                    spreadBits(frame.quantize(2, p[2])) << 2,
-                static_cast<std::uint32_t>(i));
+  if (!mortonKeysFast(points, frame, params, sorter)) {
+    for (std::size_t i = 0; i < points.size; ++i) {
+      const float* p = points.at(i);
+      if (!isFinitePoint(p) || (params.has_root_box && !insideRoot(p, frame))) continue;
+      sorter.push(spreadBits(frame.quantize(0, p[0])) | spreadBits(frame.quantize(1, p[1])) << 1 |
+                      spreadBits(frame.quantize(2, p[2])) << 2,
+                  static_cast<std::uint32_t>(i));
+    }
   }
   sorter.sort();
   const std::size_t n = sorter.size();
