@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "metricmap/common/huge_pages.h"
 #include "metricmap/common/radix_sort.h"
 
 namespace metricmap {
@@ -28,10 +29,10 @@ class KeySorter {
     keys_.clear();
     positions_.clear();
     if (packed_) {
-      words_.reserve(max_points);
+      reserveHuge(words_, max_points);
     } else {
-      keys_.reserve(max_points);
-      positions_.reserve(max_points);
+      reserveHuge(keys_, max_points);
+      reserveHuge(positions_, max_points);
     }
   }
 

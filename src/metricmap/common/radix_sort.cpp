@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "metricmap/common/huge_pages.h"
+
 namespace metricmap {
 namespace {
 
@@ -40,6 +42,7 @@ void radixSortWords(std::vector<std::uint64_t>& words, std::vector<std::uint64_t
     for (int k = 0; k < p.passes; ++k)
       ++hist[k * buckets + ((w >> (low_bit + k * p.digit_bits)) & mask)];
   }
+  reserveHuge(scratch, n);
   scratch.resize(n);
   for (int k = 0; k < p.passes; ++k) {
     std::size_t* h = &hist[k * buckets];

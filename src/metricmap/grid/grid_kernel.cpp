@@ -8,6 +8,7 @@
 
 #include "metricmap/common/bounds.h"
 #include "metricmap/common/fast_floor.h"
+#include "metricmap/common/huge_pages.h"
 #include "metricmap/exceptions.h"
 
 #if defined(__SSE2__)
@@ -191,7 +192,7 @@ void buildGrid(const PointSpan& points, const GridParams& params, GridWorkspace&
   const std::size_t n = sorter.size();
   std::size_t runs = n > 0 ? 1 : 0;
   for (std::size_t i = 1; i < n; ++i) runs += sorter.key(i) != sorter.key(i - 1);
-  result.cells.reserve(runs);
+  reserveHuge(result.cells, runs);
 
   constexpr std::size_t kAhead = 48;  // prefetch distance, measured (docs/BENCHMARKS.md)
   std::uint64_t row_start = 0;        // key of (0, iy, iz) for the row of the previous cell

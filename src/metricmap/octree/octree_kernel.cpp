@@ -8,6 +8,7 @@
 
 #include "metricmap/common/bounds.h"
 #include "metricmap/common/fast_floor.h"
+#include "metricmap/common/huge_pages.h"
 #include "metricmap/exceptions.h"
 
 #if defined(__SSE2__)
@@ -211,6 +212,7 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
   sorter.sort();
   const std::size_t n = sorter.size();
   r.stats.skipped_points = points.size - n;
+  reserveHuge(r.point_order, n);
   r.point_order.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     r.point_order[k] = static_cast<std::uint32_t>(points.sourceIndex(sorter.position(k)));
@@ -236,6 +238,9 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
       continue;
     }
     const unsigned shift = 3 * (frame.levels - 1 - node.depth);
+    if (r.nodes.size() + 8 > r.nodes.capacity()) {  // grow by doubling, on huge pages
+      reserveHuge(r.nodes, std::max<std::size_t>(4096, 2 * r.nodes.capacity()));
+    }
     const std::size_t first_child = r.nodes.size();
     r.nodes[id].first_child = first_child;
     std::size_t begin = node.first_point;
@@ -271,6 +276,7 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
   // Sums: occupied leaves in Morton order cover the sorted points in one sweep, so the gather
   // can prefetch ahead across leaves; then children into parents (children follow parents).
   std::vector<Eigen::Vector3d>& sums = workspace.sums;
+  reserveHuge(sums, r.nodes.size());
   sums.assign(r.nodes.size(), Eigen::Vector3d::Zero());
   OctreeStatistics& s = r.stats;
   constexpr std::size_t kAhead = 48;  // prefetch distance, measured (docs/BENCHMARKS.md)

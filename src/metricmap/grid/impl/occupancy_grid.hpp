@@ -7,6 +7,7 @@
 #include <pcl/point_types.h>
 #include <stdexcept>
 
+#include "metricmap/common/huge_pages.h"
 #include "metricmap/common/point_span_pcl.h"
 #include "metricmap/grid/occupancy_grid.h"
 
@@ -40,6 +41,7 @@ template <typename PointT>
 void OccupancyGrid<PointT>::applyFilter(PointCloud& output) {
   compute();
   const std::vector<GridCell>& cells = result_.cells;
+  reserveHuge(output.points, cells.size());
   output.resize(cells.size());
   for (std::size_t i = 0; i < cells.size(); ++i) {
     PointT& p = output[i];

@@ -5,6 +5,7 @@
 
 #include <pcl/point_types.h>
 
+#include "metricmap/common/huge_pages.h"
 #include "metricmap/common/point_span_pcl.h"
 #include "metricmap/octree/adaptive_octree.h"
 
@@ -46,6 +47,7 @@ template <typename PointT>
 void AdaptiveOctree<PointT>::applyFilter(PointCloud& output) {
   compute();
   const std::vector<std::size_t>& leaves = result_.occupied_leaves;
+  reserveHuge(output.points, leaves.size());
   output.resize(leaves.size());
   for (std::size_t i = 0; i < leaves.size(); ++i) {
     const OctreeNode& n = result_.nodes[leaves[i]];
