@@ -246,14 +246,19 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
     std::size_t begin = node.first_point;
     const std::size_t end = begin + node.count;
     for (unsigned c = 0; c < 8; ++c) {
-      // First position in [begin, end) whose octant digit exceeds c (keys are sorted).
+      // First position in [begin, end) whose octant digit exceeds c (keys are sorted): a
+      // forward scan for short ranges, a binary search for long ones.
       std::size_t lo = begin, hi = end;
-      while (lo < hi) {
-        const std::size_t mid = lo + (hi - lo) / 2;
-        if (((sorter.key(mid) >> shift) & 7u) <= c) {
-          lo = mid + 1;
-        } else {
-          hi = mid;
+      if (hi - lo <= 32) {
+        while (lo < hi && ((sorter.key(lo) >> shift) & 7u) <= c) ++lo;
+      } else {
+        while (lo < hi) {
+          const std::size_t mid = lo + (hi - lo) / 2;
+          if (((sorter.key(mid) >> shift) & 7u) <= c) {
+            lo = mid + 1;
+          } else {
+            hi = mid;
+          }
         }
       }
       OctreeNode child;
