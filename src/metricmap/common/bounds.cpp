@@ -3,9 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
+#include "metricmap/common/simd_points.h"
 
 namespace metricmap {
 namespace {
@@ -23,17 +21,13 @@ void scalarBounds(const PointSpan& points, float lo[3], float hi[3], std::size_t
 }
 
 #if defined(__SSE2__)
-/// x, y, z (and one more float, ignored) per point in one register; points of 16 bytes or more
-/// without an index list, which is every PCL point type in a whole cloud.
+/// x, y, z (and one more float, ignored) per point in one register (needs loadsFourFloats).
 void sseBounds(const PointSpan& points, float lo[3], float hi[3], std::size_t& finite) {
   __m128 vlo = _mm_setr_ps(lo[0], lo[1], lo[2], 0.0f);
   __m128 vhi = _mm_setr_ps(hi[0], hi[1], hi[2], 0.0f);
-  const __m128 zero = _mm_setzero_ps();
-  const char* base = reinterpret_cast<const char*>(points.base);
   for (std::size_t i = 0; i < points.size; ++i) {
-    const __m128 v = _mm_loadu_ps(reinterpret_cast<const float*>(base + i * points.stride));
-    // v - v is 0 for finite lanes and NaN for NaN/Inf ones; only x, y, z count.
-    if ((_mm_movemask_ps(_mm_cmpeq_ps(_mm_sub_ps(v, v), zero)) & 7) != 7) continue;
+    const __m128 v = loadPoint(points, i);
+    if (!finiteXyz(v)) continue;
     ++finite;
     vlo = _mm_min_ps(vlo, v);
     vhi = _mm_max_ps(vhi, v);
@@ -58,7 +52,7 @@ Bounds computeBounds(const PointSpan& points) {
     hi[a] = std::numeric_limits<float>::lowest();
   }
 #if defined(__SSE2__)
-  if (points.indices == nullptr && points.stride >= 4 * sizeof(float)) {
+  if (loadsFourFloats(points)) {
     sseBounds(points, lo, hi, b.finite);
   } else {
     scalarBounds(points, lo, hi, b.finite);

@@ -9,11 +9,8 @@
 #include "metricmap/common/bounds.h"
 #include "metricmap/common/fast_floor.h"
 #include "metricmap/common/huge_pages.h"
+#include "metricmap/common/simd_points.h"
 #include "metricmap/exceptions.h"
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace metricmap {
 namespace {
@@ -92,21 +89,23 @@ std::uint64_t totalCells(const GridLayout& layout, float cell) {
   return total;
 }
 
-/// WorldAligned keys of a whole cloud of >= 16-byte points, x, y, z in one SSE2 register:
-/// floor(p * inv) in float exactly as the scalar path (and pcl::VoxelGrid) computes it. Needs
-/// every cell index within +-2^30 (int32 conversions).
-void worldKeys(const PointSpan& points, float inv, const GridLayout& L, KeySorter& sorter) {
-  const std::uint64_t nx = L.dims[0], nxy = L.dims[0] * L.dims[1];
+/// WorldAligned keys of a whole cloud, x, y, z in one SSE2 register: floor(p * inv) in float
+/// exactly as the scalar path (and pcl::VoxelGrid) computes it. False, doing nothing, unless
+/// loadsFourFloats and every cell index is within +-2^30 (int32 conversions).
+bool worldKeysFast(const PointSpan& points, float inv, const GridLayout& L, KeySorter& sorter) {
 #if defined(__SSE2__)
+  for (int a = 0; a < 3; ++a) {
+    if (std::abs(L.min_index[a]) >= (1 << 30) || L.dims[a] >= (1u << 30)) return false;
+  }
+  if (!loadsFourFloats(points)) return false;
+  const std::uint64_t nx = L.dims[0], nxy = L.dims[0] * L.dims[1];
   const __m128 scale = _mm_set1_ps(inv);
-  const __m128 zero = _mm_setzero_ps();
   const __m128i offset =
       _mm_setr_epi32(static_cast<int>(L.min_index[0]), static_cast<int>(L.min_index[1]),
                      static_cast<int>(L.min_index[2]), 0);
-  const char* base = reinterpret_cast<const char*>(points.base);
   for (std::size_t i = 0; i < points.size; ++i) {
-    const __m128 v = _mm_loadu_ps(reinterpret_cast<const float*>(base + i * points.stride));
-    if ((_mm_movemask_ps(_mm_cmpeq_ps(_mm_sub_ps(v, v), zero)) & 7) != 7) continue;
+    const __m128 v = loadPoint(points, i);
+    if (!finiteXyz(v)) continue;
     const __m128 s = _mm_mul_ps(v, scale);
     __m128i t = _mm_cvttps_epi32(s);  // truncation; one less where that rounded up
     t = _mm_add_epi32(t, _mm_castps_si128(_mm_cmplt_ps(s, _mm_cvtepi32_ps(t))));
@@ -116,15 +115,10 @@ void worldKeys(const PointSpan& points, float inv, const GridLayout& L, KeySorte
                     nxy * static_cast<std::uint64_t>(k[2]),
                 static_cast<std::uint32_t>(i));
   }
+  return true;
 #else
-  for (std::size_t i = 0; i < points.size; ++i) {
-    const float* p = points.at(i);
-    if (!isFinitePoint(p)) continue;
-    std::uint64_t k[3];
-    for (int a = 0; a < 3; ++a)
-      k[a] = static_cast<std::uint64_t>(floorToInt(p[a] * inv) - L.min_index[a]);
-    sorter.push(k[0] + nx * k[1] + nxy * k[2], static_cast<std::uint32_t>(i));
-  }
+  (void)points, (void)inv, (void)L, (void)sorter;
+  return false;
 #endif
 }
 
@@ -169,13 +163,7 @@ void buildGrid(const PointSpan& points, const GridParams& params, GridWorkspace&
   // Linear cell key of every finite point, then a radix sort: equal keys become runs.
   KeySorter& sorter = workspace.sorter;
   sorter.reset(points.size, bitsFor(result.stats.total_cells));
-  const bool int32_indices = std::abs(L.min_index[0]) < (1 << 30) &&
-                             std::abs(L.min_index[1]) < (1 << 30) &&
-                             std::abs(L.min_index[2]) < (1 << 30) && L.dims[0] < (1u << 30) &&
-                             L.dims[1] < (1u << 30) && L.dims[2] < (1u << 30);
-  if (!cloud_min && int32_indices && points.indices == nullptr && points.stride >= 16) {
-    worldKeys(points, inv, L, sorter);
-  } else {
+  if (cloud_min || !worldKeysFast(points, inv, L, sorter)) {
     for (std::size_t i = 0; i < points.size; ++i) {
       const float* p = points.at(i);
       if (!isFinitePoint(p)) continue;

@@ -9,11 +9,8 @@
 #include "metricmap/common/bounds.h"
 #include "metricmap/common/fast_floor.h"
 #include "metricmap/common/huge_pages.h"
+#include "metricmap/common/simd_points.h"
 #include "metricmap/exceptions.h"
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace metricmap {
 namespace {
@@ -112,15 +109,15 @@ bool insideRoot(const float* p, const Frame& f) {
   return true;
 }
 
-/// The Morton keys of a whole cloud of >= 16-byte points when every level is in the breakpoint
+/// The Morton keys of a whole cloud (loadsFourFloats) when every level is in the breakpoint
 /// tables and no axis is flat: the table position is estimated for x, y, z at once in SSE2
 /// float arithmetic and then settled exactly against the tables in double, as quantize() does
 /// (the settled position does not depend on the estimate). False when it does not apply.
 bool mortonKeysFast(const PointSpan& points, const Frame& f, const OctreeParams& params,
                     KeySorter& sorter) {
 #if defined(__SSE2__)
-  if (points.indices != nullptr || points.stride < 16 || params.has_root_box ||
-      f.table_levels != f.levels || f.levels > 16) {
+  if (!loadsFourFloats(points) || params.has_root_box || f.table_levels != f.levels ||
+      f.levels > 16) {
     return false;
   }
   for (int a = 0; a < 3; ++a) {
@@ -139,11 +136,10 @@ bool mortonKeysFast(const PointSpan& points, const Frame& f, const OctreeParams&
   const __m128 vtop = _mm_set1_ps(static_cast<float>(top));
   const __m128 zero = _mm_setzero_ps();
   const double* breaks[3] = {f.breaks[0].data(), f.breaks[1].data(), f.breaks[2].data()};
-  const char* base = reinterpret_cast<const char*>(points.base);
   for (std::size_t i = 0; i < points.size; ++i) {
-    const float* p = reinterpret_cast<const float*>(base + i * points.stride);
+    const float* p = points.at(i);
     const __m128 v = _mm_loadu_ps(p);
-    if ((_mm_movemask_ps(_mm_cmpeq_ps(_mm_sub_ps(v, v), zero)) & 7) != 7) continue;
+    if (!finiteXyz(v)) continue;
     const __m128 e = _mm_min_ps(_mm_max_ps(_mm_mul_ps(_mm_sub_ps(v, vmin), vscale), zero), vtop);
     alignas(16) std::int32_t est[4];
     _mm_store_si128(reinterpret_cast<__m128i*>(est), _mm_cvttps_epi32(e));
