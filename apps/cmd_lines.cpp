@@ -26,9 +26,14 @@ struct LinesOptions {
   bool generic = false;
   long long scan = 0;
   bool all = false;
-  double distance = 0.05, angle_deg = 5.0, min_length = 0.1, max_gap = 0.0, chi2 = 0.0;
-  long long min_points = 5;
-  double range_sigma = 0.01, bearing_sigma_deg = 0.1;
+  // Defaults: the library's (SplitAndMergeParams), angles shown in degrees.
+  double distance = SplitAndMergeParams{}.distance_threshold;
+  double angle_deg = SplitAndMergeParams{}.angle_threshold * 180.0 / M_PI;
+  double min_length = SplitAndMergeParams{}.min_length, max_gap = SplitAndMergeParams{}.max_gap;
+  double chi2 = 0.0;  // 0: split on distance; > 0: the chi-square test with this threshold
+  long long min_points = static_cast<long long>(SplitAndMergeParams{}.min_points);
+  double range_sigma = SplitAndMergeParams{}.range_sigma;
+  double bearing_sigma_deg = SplitAndMergeParams{}.bearing_sigma * 180.0 / M_PI;
 };
 
 constexpr double kDeg = M_PI / 180.0;
@@ -54,7 +59,8 @@ ScanLog readLog(const LinesOptions& o) {
 SplitAndMergeParams paramsOf(const LinesOptions& o) {
   SplitAndMergeParams p;
   p.distance_threshold = o.distance;
-  p.angle_threshold = o.angle_deg * kDeg;
+  // Degrees are converted only when given, so the defaults stay the library's bit for bit.
+  if (o.angle_deg != LinesOptions{}.angle_deg) p.angle_threshold = o.angle_deg * kDeg;
   p.min_points = static_cast<std::size_t>(o.min_points);
   p.min_length = o.min_length;
   p.max_gap = o.max_gap;
@@ -62,7 +68,9 @@ SplitAndMergeParams paramsOf(const LinesOptions& o) {
   p.chi2_split = o.chi2 > 0.0;
   if (p.chi2_split) p.chi2_threshold = o.chi2;
   p.range_sigma = o.range_sigma;
-  p.bearing_sigma = o.bearing_sigma_deg * kDeg;
+  if (o.bearing_sigma_deg != LinesOptions{}.bearing_sigma_deg) {
+    p.bearing_sigma = o.bearing_sigma_deg * kDeg;
+  }
   return p;
 }
 

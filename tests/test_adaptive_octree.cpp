@@ -230,4 +230,11 @@ TEST(AdaptiveOctree, RandomCloudsMatchReference) {
   }
 }
 
+TEST(AdaptiveOctree, FilterWithoutInputThrowsAsComputeDoes) {
+  AdaptiveOctree<pcl::PointXYZ> octree;
+  pcl::PointCloud<pcl::PointXYZ> out;
+  EXPECT_THROW(octree.compute(), std::invalid_argument);
+  EXPECT_THROW(octree.filter(out), std::invalid_argument);
+}
+
 }  // namespace metricmap

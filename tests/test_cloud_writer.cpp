@@ -1,5 +1,8 @@
 // Atomic PCD writes: every encoding reads back identically; failures leave nothing behind.
+#include <algorithm>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -42,6 +45,22 @@ TEST(CloudWriter, FailureLeavesNothing) {
   EXPECT_THROW(savePcdAtomic("/nonexistent-dir/x.pcd", cloud, PcdFormat::Binary),
                std::runtime_error);
   EXPECT_THROW(writeTextAtomic("/nonexistent-dir/x.csv", "a"), std::runtime_error);
+  // A destination that is a directory: the temporary is written beside it, the final rename
+  // fails, and the directory must hold exactly what it held before.
+  const fs::path dir =
+      fs::temp_directory_path() / ("metricmap_writer_fail_" + std::to_string(::getpid()));
+  fs::create_directories(dir / "taken.pcd");
+  fs::create_directories(dir / "taken.csv");
+  EXPECT_THROW(savePcdAtomic((dir / "taken.pcd").string(), cloud, PcdFormat::Binary),
+               std::runtime_error);
+  EXPECT_THROW(writeTextAtomic((dir / "taken.csv").string(), "a"), std::runtime_error);
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(dir)) left.push_back(e.path().filename().string());
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"taken.csv", "taken.pcd"}));
+  EXPECT_TRUE(fs::is_directory(dir / "taken.pcd"));
+  EXPECT_TRUE(fs::is_empty(dir / "taken.pcd"));
+  fs::remove_all(dir);
   EXPECT_THROW(parsePcdFormat("binary-compressed"), std::invalid_argument);
 }
 

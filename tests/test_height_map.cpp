@@ -195,4 +195,12 @@ TEST(HeightMap, DigitizeEdgesAndBadParameters) {
   }
 }
 
+TEST(HeightMap, FloorFitRefusesStrideZeroAndBadThresholds) {
+  const auto cloud = kinectCloud();
+  EXPECT_THROW(fitFloor(cloud, 0.02, 0), std::invalid_argument);  // was a division by zero
+  EXPECT_THROW(fitFloor(cloud, 0.0), std::invalid_argument);
+  EXPECT_THROW(fitFloor(cloud, std::nan("")), std::invalid_argument);
+  EXPECT_GT(fitFloor(cloud, 0.02, 1).inliers, fitFloor(cloud, 0.02, 8).inliers);
+}
+
 }  // namespace metricmap

@@ -49,15 +49,16 @@ TEST(HugePages, AFreshReservedBufferIsBackedByHugePagesWhenTheKernelOffersThem) 
   const bool offered =
       mode.find("[madvise]") != std::string::npos || mode.find("[always]") != std::string::npos;
   const long before = anonHugeKiB();
+  if (!offered || before < 0) {
+    GTEST_SKIP() << "transparent huge pages are not offered on request here (mode: " << mode
+                 << "); nothing to measure";
+  }
   std::vector<std::uint64_t> v;
   reserveHuge(v, std::size_t{32} << 20 >> 3);  // 32 MiB, untouched
   v.resize(v.capacity(), 7);                   // first touch
   const long after = anonHugeKiB();
-  if (offered && before >= 0) {
-    EXPECT_GE(after - before, 8 * 1024) << "THP mode: " << mode;
-  } else {
-    EXPECT_EQ(v.back(), 7u);  // no THP here: the buffer still works
-  }
+  EXPECT_GE(after - before, 8 * 1024) << "THP mode: " << mode;
+  EXPECT_EQ(v.back(), 7u);
 }
 
 }  // namespace

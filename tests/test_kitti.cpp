@@ -287,4 +287,51 @@ TEST(KittiData, GroundTruthOfFrames0To14IsConstantVelocityAndTheScansDisagree) {
   EXPECT_LT(best_scale, 0.90);  // 0.86 m by the poses, about 0.68 m by the scans
 }
 
+TEST(Kitti, MapSizeLimitsAreCapacityErrors) {
+  Cloud far;
+  far.push_back(pcl::PointXYZ(-1.9e8f, 0, 0));
+  far.push_back(pcl::PointXYZ(1.9e8f, 0, 1));
+  OccupancyMap2D map(0.1, MapPlane::XZ);
+  map.add(far);  // 3.8e9 cells apart: each index fits, the image does not
+  EXPECT_THROW(map.image(), CapacityError);
+  OccupancyMap2D fine(1e-3, MapPlane::XZ);
+  EXPECT_THROW(fine.add(far), CapacityError);  // an index beyond 2e9
+  Cloud scan;
+  loadCloud(kSeq.scan(0), scan);
+  OccupancyMap2D dense(0.0055, MapPlane::XY);  // tens of thousands of pixels each way
+  dense.add(scan);
+  try {
+    dense.image();
+    FAIL() << "expected CapacityError";
+  } catch (const CapacityError& e) {
+    EXPECT_NE(std::string(e.what()).find("coarser"), std::string::npos) << e.what();
+  }
+  OccupancyMap2D coarse(0.5, MapPlane::XY);
+  coarse.add(scan);
+  EXPECT_GT(coarse.image().width, 100);
+}
+
+TEST(Kitti, FrameListsAreBoundedBeforeAllocating) {
+  EXPECT_THROW(parseFrameList("0-999999999"), std::invalid_argument);
+  EXPECT_THROW(parseFrameList("0-5,7-10", 9), std::invalid_argument);
+  EXPECT_EQ(parseFrameList("0-5,7-9", 9).size(), 9u);
+  EXPECT_EQ(parseFrameList("4,2"), (std::vector<std::size_t>{4, 2}));
+}
+
+TEST(Kitti, PoseFilesRoundTrip) {
+  const auto poses = readKittiPoses(kSeq.poses(), 6);
+  const std::string path = writeTemp("poses_round_trip.txt", formatKittiPoses(poses));
+  const auto back = readKittiPoses(path, 6);
+  const Eigen::Isometry3d tr = readKittiCalibTr(kSeq.calib());
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_LT((back[i].matrix() - poses[i].matrix()).cwiseAbs().maxCoeff(), 1e-8);
+    for (KittiWorld w : {KittiWorld::Camera, KittiWorld::Velodyne}) {
+      const Eigen::Isometry3d again = kittiPoseOfScan(kittiScanToWorld(poses[i], tr, w), tr, w);
+      const Eigen::Isometry3d expected =
+          w == KittiWorld::Camera ? poses[i] : kittiScanToWorld(poses[i], tr, w);
+      EXPECT_LT((again.matrix() - expected.matrix()).cwiseAbs().maxCoeff(), 1e-6);
+    }
+  }
+}
+
 }  // namespace metricmap

@@ -194,4 +194,14 @@ TEST(OccupancyGrid, KeepsOtherFieldsOfTheFirstPoint) {
   EXPECT_EQ(out[0].b, 30);
 }
 
+TEST(OccupancyGrid, FilterWithoutInputThrowsAsComputeDoes) {
+  OccupancyGrid<pcl::PointXYZ> grid;
+  grid.setCellSize(0.5f);
+  pcl::PointCloud<pcl::PointXYZ> out;
+  out.push_back(pcl::PointXYZ(1, 2, 3));
+  EXPECT_THROW(grid.compute(), std::invalid_argument);
+  EXPECT_THROW(grid.filter(out), std::invalid_argument);  // pcl::Filter returns quietly
+  EXPECT_EQ(out.size(), 1u);                              // and leaves the output as it was
+}
+
 }  // namespace metricmap

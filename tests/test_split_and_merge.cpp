@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "metricmap/io/laser_scan.h"
 #include "metricmap/lines/split_and_merge.h"
 
 namespace metricmap {
@@ -180,6 +181,8 @@ TEST(SplitAndMerge, PurgeRules) {
   SplitAndMergeParams p;
   p.distance_threshold = 0.05;
   p.angle_threshold = 0.0;
+  p.min_points = 0;  // no purge
+  p.min_length = 0.0;
   EXPECT_EQ(run(cloud, p).size(), 2u);  // the wall and the post
   p.min_points = 5;
   EXPECT_EQ(run(cloud, p).size(), 1u);
@@ -208,6 +211,8 @@ TEST(SplitAndMerge, NoPointLostAndAllWithinThreshold) {
     SplitAndMergeParams prm;
     prm.distance_threshold = 0.01 + 0.002 * trial;
     prm.angle_threshold = 0.0;
+    prm.min_points = 0;  // no purge: every valid point belongs to a segment
+    prm.min_length = 0.0;
     std::vector<pcl::PointIndices> members;
     const auto segs = run(cloud, prm, &members);
     std::vector<int> seen(cloud->size(), 0);
@@ -248,7 +253,10 @@ TEST(SplitAndMerge, DegenerateInputsAndBadParameters) {
   EXPECT_TRUE(run(empty, SplitAndMergeParams()).empty());
   auto one = std::make_shared<Cloud>();
   one->push_back(pcl::PointXYZ(1, 1, 0));
-  const auto s = run(one, SplitAndMergeParams());
+  SplitAndMergeParams keep_all;
+  keep_all.min_points = 0;
+  keep_all.min_length = 0.0;
+  const auto s = run(one, keep_all);
   ASSERT_EQ(s.size(), 1u);
   EXPECT_EQ(s[0].points, 1u);
   SplitAndMerge<pcl::PointXYZ> sam;
@@ -257,6 +265,29 @@ TEST(SplitAndMerge, DegenerateInputsAndBadParameters) {
   EXPECT_THROW(sam.setAngleThreshold(-0.1), std::invalid_argument);
   EXPECT_THROW(sam.setMinLength(-1.0), std::invalid_argument);
   EXPECT_THROW(sam.setMaxGap(INFINITY), std::invalid_argument);
+}
+
+TEST(SplitAndMerge, MergeReachesAFixpointOnARealLog) {
+  // Every scan of the URG-04LX log: after the merge no two neighbouring segments' chords differ
+  // by less than the angle threshold (a merged segment is compared again with the one before).
+  const ScanLog log = readScanLines(
+      std::string(METRICMAP_DATA_DIR) + "/breezyslam_mines_urg04lx/exp2.dat", urg04lxMinesFormat());
+  const SplitAndMergeParams defaults;
+  for (double angle_deg : {5.0, 10.0, 20.0}) {
+    SplitAndMergeParams p = defaults;
+    p.angle_threshold = angle_deg * M_PI / 180.0;
+    std::size_t checked = 0;
+    for (std::size_t k = 0; k < log.scans.size(); k += 5) {
+      const auto cloud = std::make_shared<Cloud>(scanToCloud(log.scans[k]));
+      const auto segs = run(cloud, p);
+      for (std::size_t i = 1; i < segs.size(); ++i) {
+        ASSERT_GE(std::fabs(segs[i - 1].angleTo(segs[i])), p.angle_threshold)
+            << "scan " << k << " segments " << i - 1 << "," << i << " at " << angle_deg << " deg";
+        ++checked;
+      }
+    }
+    EXPECT_GT(checked, 1000u);
+  }
 }
 
 }  // namespace metricmap

@@ -121,7 +121,7 @@ sed -i '2s/^[^ ]*/nan/' "$kr/poses/00.txt"
 expect 1 "line 2 is not 12 finite numbers" -- "$MM" kitti "$kr" --frames 0-1
 expect 2 "--frames" -- "$MM" kitti "$kr" --frames 0 --first 0 --count 1
 expect 2 "frames" -- "$MM" kitti "$kr"
-expect 1 "frame list" -- "$MM" kitti "$kr" --frames 3-1
+expect 2 "frame list" -- "$MM" kitti "$kr" --frames 3-1
 expect 2 "--map-resolution" -- "$MM" kitti "$kr" --frames 0 --map-resolution 0
 expect 2 "--map-plane" -- "$MM" kitti "$kr" --frames 0 --map-plane ab
 expect 2 "--perturb" -- "$MM" kitti "$kr" --frames 0 --perturb 0.5

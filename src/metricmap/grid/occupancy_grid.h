@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include <pcl/filters/filter.h>
@@ -59,6 +60,14 @@ class OccupancyGrid : public pcl::Filter<PointT> {
   /// \brief Bin the input without producing a cloud (filter() does this too).
   /// \throws std::invalid_argument without an input cloud; CapacityError when too large
   void compute();
+
+  /// \brief pcl::Filter::filter, except that without an input cloud it throws, as compute()
+  /// does, instead of returning quietly with the output untouched.
+  /// \throws std::invalid_argument without an input cloud; CapacityError when too large
+  void filter(PointCloud& output) {
+    if (!input_) throw std::invalid_argument(filter_name_ + ": no input cloud set");
+    pcl::Filter<PointT>::filter(output);
+  }
 
   /// \brief Figures of the last build.
   const GridStatistics& getStatistics() const { return result_.stats; }

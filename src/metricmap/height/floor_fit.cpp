@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include <pcl/ModelCoefficients.h>
 #include <pcl/PointIndices.h>
@@ -13,6 +14,11 @@ namespace metricmap {
 
 FloorPlane fitFloor(const pcl::PointCloud<pcl::PointXYZ>& camera_cloud, double distance_threshold,
                     std::size_t stride) {
+  if (stride == 0) throw std::invalid_argument("floor fit: stride must be at least 1, got 0");
+  if (!std::isfinite(distance_threshold) || !(distance_threshold > 0.0)) {
+    throw std::invalid_argument("floor fit: distance threshold must be a finite number > 0, got " +
+                                std::to_string(distance_threshold));
+  }
   auto sample = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   std::size_t k = 0;
   for (const auto& p : camera_cloud) {

@@ -62,8 +62,9 @@ std::vector<Eigen::Isometry3d> readKittiPoses(const std::string& path, std::size
   return poses;
 }
 
-std::vector<std::size_t> parseFrameList(const std::string& text) {
+std::vector<std::size_t> parseFrameList(const std::string& text, std::size_t max_frames) {
   std::vector<std::size_t> frames;
+  std::size_t total = 0;
   std::istringstream is(text);
   auto number = [&](const std::string& s) {
     if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos || s.size() > 9) {
@@ -73,16 +74,34 @@ std::vector<std::size_t> parseFrameList(const std::string& text) {
   };
   for (std::string item; std::getline(is, item, ',');) {
     const auto dash = item.find('-');
-    if (dash == std::string::npos) {
-      frames.push_back(number(item));
-      continue;
-    }
-    const std::size_t a = number(item.substr(0, dash)), b = number(item.substr(dash + 1));
+    const std::size_t a = number(item.substr(0, dash));
+    const std::size_t b = dash == std::string::npos ? a : number(item.substr(dash + 1));
     if (b < a) throw std::invalid_argument("frame list: range '" + item + "' runs backwards");
+    total += b - a + 1;
+    if (total > max_frames) {
+      throw std::invalid_argument("frame list '" + text + "' names more than " +
+                                  std::to_string(max_frames) + " frames");
+    }
     for (std::size_t f = a; f <= b; ++f) frames.push_back(f);
   }
   if (frames.empty()) throw std::invalid_argument("frame list is empty");
   return frames;
+}
+
+std::string formatKittiPoses(const std::vector<Eigen::Isometry3d>& poses) {
+  std::string text;
+  for (const Eigen::Isometry3d& pose : poses) {
+    for (int row = 0; row < 3; ++row) {
+      for (int col = 0; col < 4; ++col) {
+        char num[32];
+        std::snprintf(num, sizeof num, "%.9e", pose.matrix()(row, col));
+        if (row || col) text += ' ';
+        text += num;
+      }
+    }
+    text += '\n';
+  }
+  return text;
 }
 
 std::string KittiSequence::scan(std::size_t frame) const {
@@ -98,6 +117,11 @@ Eigen::Isometry3d kittiScanToWorld(const Eigen::Isometry3d& pose, const Eigen::I
   Eigen::Isometry3d tr_inv;
   tr_inv.matrix() = tr.matrix().inverse();
   return tr_inv * pose * tr;
+}
+
+Eigen::Isometry3d kittiPoseOfScan(const Eigen::Isometry3d& scan_to_world,
+                                  const Eigen::Isometry3d& tr, KittiWorld world) {
+  return world == KittiWorld::Camera ? scan_to_world * tr.inverse() : scan_to_world;
 }
 
 }  // namespace metricmap

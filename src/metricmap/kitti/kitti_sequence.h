@@ -20,9 +20,17 @@ Eigen::Isometry3d readKittiCalibTr(const std::string& calib_path);
 /// \throws InputError naming the file and line: too few lines, wrong count, NaN/Inf
 std::vector<Eigen::Isometry3d> readKittiPoses(const std::string& poses_path, std::size_t frames);
 
+/// \brief Most frames a frame list may name (KITTI's longest sequence has 4661).
+constexpr std::size_t kMaxFrameList = 1000000;
+
 /// \brief "0-5,15" -> 0 1 2 3 4 5 15 (ascending ranges, no duplicates needed).
-/// \throws std::invalid_argument naming the bad item
-std::vector<std::size_t> parseFrameList(const std::string& text);
+/// \throws std::invalid_argument naming the bad item, or when the list names more than
+/// `max_frames` frames (checked before anything is allocated)
+std::vector<std::size_t> parseFrameList(const std::string& text,
+                                        std::size_t max_frames = kMaxFrameList);
+
+/// \brief Poses in a KITTI pose file's form: 12 numbers (row-major 3x4) per line, `%.9e`.
+std::string formatKittiPoses(const std::vector<Eigen::Isometry3d>& poses);
 
 /// \brief Paths of one sequence under a KITTI odometry root.
 struct KittiSequence {
@@ -39,5 +47,10 @@ enum class KittiWorld { Camera, Velodyne };
 /// \brief velodyne of frame i -> world: P_i * Tr (camera world) or Tr^-1 * P_i * Tr.
 Eigen::Isometry3d kittiScanToWorld(const Eigen::Isometry3d& pose, const Eigen::Isometry3d& tr,
                                    KittiWorld world);
+
+/// \brief The inverse of kittiScanToWorld for the pose file: a velodyne -> world pose as the
+/// camera 0 pose KITTI's files hold (camera world), or unchanged (velodyne world).
+Eigen::Isometry3d kittiPoseOfScan(const Eigen::Isometry3d& scan_to_world,
+                                  const Eigen::Isometry3d& tr, KittiWorld world);
 
 }  // namespace metricmap

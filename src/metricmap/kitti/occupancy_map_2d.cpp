@@ -8,6 +8,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "metricmap/common/fast_floor.h"
+#include "metricmap/exceptions.h"
 #include "metricmap/io/array_writers.h"
 #include "metricmap/io/cloud_writer.h"
 
@@ -56,13 +57,21 @@ void OccupancyMap2D::add(const pcl::PointCloud<pcl::PointXYZ>& world_points) {
     if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) continue;
     const double u = v[a] * inv, w = v[b] * inv;
     if (std::fabs(u) > kLimit || std::fabs(w) > kLimit) {
-      throw std::invalid_argument("map resolution too fine for the coordinates (over 2e9 cells)");
+      throw CapacityError("map resolution " + std::to_string(resolution_) +
+                          " m too fine for a point at " + std::to_string(v[a]) + ", " +
+                          std::to_string(v[b]) + " (cell index beyond 2e9)");
     }
     ++hits_[pack(floorToInt(u), floorToInt(w))];
   }
 }
 
-MapImage OccupancyMap2D::image() const {
+std::size_t OccupancyMap2D::occupied(std::uint32_t min_hits) const {
+  std::size_t n = 0;
+  for (const auto& [key, count] : hits_) n += count >= min_hits ? 1 : 0;
+  return n;
+}
+
+MapImage OccupancyMap2D::image(std::uint64_t max_pixels) const {
   MapImage m;
   m.resolution = resolution_;
   if (hits_.empty()) return m;
@@ -76,11 +85,15 @@ MapImage OccupancyMap2D::image() const {
     j0 = std::min(j0, j);
     j1 = std::max(j1, j);
   }
-  m.width = static_cast<int>(i1 - i0 + 1);
-  m.height = static_cast<int>(j1 - j0 + 1);
-  if (static_cast<double>(m.width) * m.height > 1e9) {
-    throw std::invalid_argument("map image would have over 1e9 pixels; use a coarser resolution");
+  const std::uint64_t w = static_cast<std::uint64_t>(i1 - i0 + 1);
+  const std::uint64_t h = static_cast<std::uint64_t>(j1 - j0 + 1);
+  if (static_cast<double>(w) * static_cast<double>(h) > static_cast<double>(max_pixels)) {
+    throw CapacityError("map image of " + std::to_string(w) + " x " + std::to_string(h) +
+                        " cells at " + std::to_string(resolution_) + " m exceeds " +
+                        std::to_string(max_pixels) + " pixels; use a coarser map resolution");
   }
+  m.width = static_cast<int>(w);
+  m.height = static_cast<int>(h);
   m.origin_x = static_cast<double>(i0) * resolution_;
   m.origin_y = static_cast<double>(j0) * resolution_;
   m.hits.assign(static_cast<std::size_t>(m.width) * m.height, 0);

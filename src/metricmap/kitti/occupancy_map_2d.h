@@ -38,11 +38,17 @@ class OccupancyMap2D {
   /// \throws std::invalid_argument for a resolution that is not finite and > 0
   OccupancyMap2D(double resolution, MapPlane plane);
   /// \brief Count every finite point (already in the world frame).
+  /// \throws CapacityError when a cell index leaves the 32-bit range (resolution too fine)
   void add(const pcl::PointCloud<pcl::PointXYZ>& world_points);
   /// \brief Cells with at least one hit.
   std::size_t cells() const { return hits_.size(); }
+  /// \brief Cells with at least `min_hits` hits (and at least one).
+  std::size_t occupied(std::uint32_t min_hits) const;
   /// \brief The dense image over the hit cells' bounds (empty map: 0 x 0).
-  MapImage image() const;
+  /// \throws CapacityError when it would exceed `max_pixels` pixels
+  MapImage image(std::uint64_t max_pixels = kMaxImagePixels) const;
+  /// \brief Default bound of image(): 2^28 pixels (1 GiB of hit counts).
+  static constexpr std::uint64_t kMaxImagePixels = std::uint64_t{1} << 28;
 
  private:
   double resolution_;

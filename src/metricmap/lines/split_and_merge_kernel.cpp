@@ -111,23 +111,31 @@ class Segmenter {
     return out;
   }
 
+  /// Merge neighbours whose chords (first to last point) differ by less than the angle
+  /// threshold, to a fixpoint: a merged piece is compared again with the piece before it, so
+  /// that afterwards no two neighbours differ by less than the threshold.
   std::vector<Piece> merge(const std::vector<Piece>& pieces) const {
     if (pieces.empty() || params_.angle_threshold <= 0.0) return pieces;
     std::vector<Piece> out;
     Piece current = pieces.front();
+    auto joins = [&](const Piece& a, const Piece& b) {
+      return std::fabs(chord(a).angleTo(chord(b))) < params_.angle_threshold;
+    };
     for (std::size_t i = 1; i < pieces.size(); ++i) {
       const Piece& next = pieces[i];
-      if (std::fabs(chord(current).angleTo(chord(next))) < params_.angle_threshold) {
-        current.ranges.insert(current.ranges.end(), next.ranges.begin(), next.ranges.end());
-        if (step_ != nullptr) {
-          std::vector<Piece> now = out;
-          now.push_back(current);
-          now.insert(now.end(), pieces.begin() + static_cast<std::ptrdiff_t>(i) + 1, pieces.end());
-          (*step_)("merge", segments(now));
-        }
-      } else {
-        out.push_back(current);
+      if (!joins(current, next)) {
+        out.push_back(std::move(current));
         current = next;
+        continue;
+      }
+      current.ranges.insert(current.ranges.end(), next.ranges.begin(), next.ranges.end());
+      notifyMerge(out, current, pieces, i);
+      while (!out.empty() && joins(out.back(), current)) {
+        Piece joined = std::move(out.back());
+        out.pop_back();
+        joined.ranges.insert(joined.ranges.end(), current.ranges.begin(), current.ranges.end());
+        current = std::move(joined);
+        notifyMerge(out, current, pieces, i);
       }
     }
     out.push_back(current);
@@ -175,6 +183,15 @@ class Segmenter {
   }
 
  private:
+  void notifyMerge(const std::vector<Piece>& done, const Piece& current,
+                   const std::vector<Piece>& pieces, std::size_t i) const {
+    if (step_ == nullptr) return;
+    std::vector<Piece> now = done;
+    now.push_back(current);
+    now.insert(now.end(), pieces.begin() + static_cast<std::ptrdiff_t>(i) + 1, pieces.end());
+    (*step_)("merge", segments(now));
+  }
+
   void notify(const char* what, const std::vector<Piece>& done,
               const std::vector<Range>& todo) const {
     if (step_ == nullptr) return;

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include <pcl/filters/filter.h>
@@ -62,6 +63,14 @@ class AdaptiveOctree : public pcl::Filter<PointT> {
   /// \brief Build the tree without producing a cloud (filter() does this too).
   /// \throws std::invalid_argument without an input cloud
   void compute();
+
+  /// \brief pcl::Filter::filter, except that without an input cloud it throws, as compute()
+  /// does, instead of returning quietly with the output untouched.
+  /// \throws std::invalid_argument without an input cloud; CapacityError when too large
+  void filter(PointCloud& output) {
+    if (!input_) throw std::invalid_argument(filter_name_ + ": no input cloud set");
+    pcl::Filter<PointT>::filter(output);
+  }
 
   const OctreeStatistics& getStatistics() const { return result_.stats; }
   /// \brief All nodes of the last build; index 0 is the root.

@@ -1,0 +1,188 @@
+#include "metricmap/mapping/scan_mapper.h"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <pcl/common/transforms.h>
+
+#include "metricmap/exceptions.h"
+#include "metricmap/grid/occupancy_grid.h"
+
+namespace metricmap {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void require(bool ok, const std::string& message) {
+  if (!ok) throw std::invalid_argument(message);
+}
+
+std::string str(double v) { return std::to_string(v); }
+
+}  // namespace
+
+RegistrationTarget parseRegistrationTarget(const std::string& name) {
+  if (name == "map") return RegistrationTarget::Map;
+  if (name == "previous") return RegistrationTarget::Previous;
+  if (name == "first") return RegistrationTarget::First;
+  throw std::invalid_argument("registration target must be map, previous or first, got '" + name +
+                              "'");
+}
+
+void validateScanMapperConfig(const ScanMapperConfig& c) {
+  require(std::isfinite(c.min_range) && c.min_range >= 0.0,
+          "min range must be a finite number >= 0, got " + str(c.min_range));
+  require(!std::isnan(c.max_range) && c.max_range > 0.0,
+          "max range must be a number > 0, got " + str(c.max_range));
+  require(c.min_range <= c.max_range,
+          "min range " + str(c.min_range) + " exceeds max range " + str(c.max_range));
+  require(std::isfinite(c.voxel) && c.voxel >= 0.0,
+          "voxel must be a finite number >= 0 (0: off), got " + str(c.voxel));
+  require(!std::isnan(c.min_height) && !std::isnan(c.max_height),
+          "height band bounds must not be NaN");
+  require(c.min_height <= c.max_height,
+          "min height " + str(c.min_height) + " exceeds max height " + str(c.max_height));
+  require(c.up.allFinite() && c.up.norm() > 0.0f, "the up axis must be a finite non-zero vector");
+  require(std::isfinite(c.map_resolution) && c.map_resolution > 0.0,
+          "map resolution must be a finite number > 0, got " + str(c.map_resolution));
+  const RegistrationConfig& r = c.registration;
+  require(std::isfinite(r.structure_voxel) && r.structure_voxel > 0.0f,
+          "registration voxel must be a finite number > 0, got " + str(r.structure_voxel));
+  require(std::isfinite(r.target_voxel) && r.target_voxel > 0.0,
+          "registration target voxel must be a finite number > 0, got " + str(r.target_voxel));
+  require(std::isfinite(r.refine.max_correspondence) && r.refine.max_correspondence > 0.0,
+          "max correspondence distance must be a finite number > 0, got " +
+              str(r.refine.max_correspondence));
+  require(r.refine.max_iterations > 0, "registration needs at least one iteration");
+  require(r.min_points >= 1, "registration needs a minimum of at least one point");
+}
+
+pcl::PointCloud<pcl::PointXYZ> rangeBand(const pcl::PointCloud<pcl::PointXYZ>& scan,
+                                         double min_range, double max_range) {
+  pcl::PointCloud<pcl::PointXYZ> out;
+  out.reserve(scan.size());
+  for (const auto& p : scan) {
+    const double r = p.getVector3fMap().norm();
+    if (r >= min_range && r <= max_range) out.push_back(p);
+  }
+  out.width = static_cast<std::uint32_t>(out.size());
+  out.height = 1;
+  return out;
+}
+
+pcl::PointCloud<pcl::PointXYZ> voxelAverage(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                            double voxel) {
+  pcl::PointCloud<pcl::PointXYZ> out;
+  if (cloud.empty()) return out;
+  OccupancyGrid<pcl::PointXYZ> grid;
+  grid.setOrigin(GridOrigin::WorldAligned);
+  grid.setCellSize(static_cast<float>(voxel));
+  grid.setInputCloud(std::make_shared<const pcl::PointCloud<pcl::PointXYZ>>(cloud));
+  grid.filter(out);
+  return out;
+}
+
+ScanMapper::ScanMapper(const ScanMapperConfig& config)
+    : config_(config),
+      map_((validateScanMapperConfig(config), config.map_resolution), config.plane),
+      global_(std::make_shared<Cloud>()),
+      target_(std::make_shared<Cloud>()) {}
+
+FrameReport ScanMapper::addScan(const Cloud& scan_in_sensor, const Eigen::Isometry3d& pose) {
+  const RegistrationConfig& reg = config_.registration;
+  FrameReport report;
+  report.index = used_.size();
+  report.points_read = scan_in_sensor.size();
+  report.pose_given = pose;
+  report.pose_used = pose;
+
+  auto t = std::chrono::steady_clock::now();
+  Cloud kept = rangeBand(scan_in_sensor, config_.min_range, config_.max_range);
+  report.seconds_transform += secondsSince(t);
+
+  if (reg.enabled && report.index > 0) {
+    t = std::chrono::steady_clock::now();
+    const Cloud::Ptr source = registrationCloud(kept, reg.structure_voxel);
+    if (source->size() < reg.min_points || target_->size() < reg.min_points) {
+      throw InputError("scan " + std::to_string(report.index) + ": registration needs at least " +
+                       std::to_string(reg.min_points) + " points in the scan and the target (" +
+                       std::to_string(source->size()) + " and " + std::to_string(target_->size()) +
+                       " within 3-40 m above the ground); widen the range band");
+    }
+    const RefineResult r = refineScanPose(source, target_, pose, reg.refine);
+    report.pose_used = r.scan_to_world;
+    report.registered = true;
+    report.converged = r.converged;
+    report.fitness = r.fitness;
+    report.seconds_register = secondsSince(t);
+  }
+
+  t = std::chrono::steady_clock::now();
+  if (reg.enabled) updateTarget(kept, report.pose_used);
+  Cloud world;
+  pcl::transformPointCloud(kept, world, report.pose_used.matrix().cast<float>());
+  if (config_.voxel > 0.0) world = voxelAverage(world, config_.voxel);
+  report.points_kept = world.size();
+  report.seconds_transform += secondsSince(t);
+
+  t = std::chrono::steady_clock::now();
+  Cloud band;
+  band.reserve(world.size());
+  for (const auto& p : world) {
+    const float h = config_.up.dot(p.getVector3fMap());
+    if (h >= config_.min_height && h <= config_.max_height) band.push_back(p);
+  }
+  report.points_mapped = band.size();
+  map_.add(band);
+  report.seconds_map = secondsSince(t);
+  if (config_.keep_global_cloud) *global_ += world;
+  given_.push_back(pose);
+  used_.push_back(report.pose_used);
+  return report;
+}
+
+void ScanMapper::updateTarget(const Cloud& kept_in_sensor, const Eigen::Isometry3d& pose) {
+  const RegistrationConfig& reg = config_.registration;
+  if (reg.target == RegistrationTarget::First && !used_.empty()) return;
+  Cloud structure;
+  pcl::transformPointCloud(*registrationCloud(kept_in_sensor, reg.structure_voxel), structure,
+                           pose.matrix().cast<float>());
+  if (reg.target == RegistrationTarget::Map) {
+    *target_ += structure;
+    *target_ = voxelAverage(*target_, reg.target_voxel);
+  } else {
+    *target_ = std::move(structure);
+  }
+}
+
+std::size_t ScanMapper::occupiedCells() const { return map_.occupied(config_.min_hits); }
+
+ScanMapper::Cloud ScanMapper::globalCloud() const {
+  return config_.voxel > 0.0 ? voxelAverage(*global_, config_.voxel) : *global_;
+}
+
+TrajectoryError ScanMapper::trajectoryError(const std::vector<Eigen::Isometry3d>& reference) const {
+  if (reference.size() != used_.size()) {
+    throw std::invalid_argument("trajectory error: " + std::to_string(reference.size()) +
+                                " reference poses for " + std::to_string(used_.size()) + " scans");
+  }
+  TrajectoryError e;
+  double sq_given = 0.0, sq_used = 0.0;
+  for (std::size_t i = 0; i < reference.size(); ++i) {
+    e.given.push_back(poseError(reference[i], given_[i]));
+    e.used.push_back(poseError(reference[i], used_[i]));
+    sq_given += e.given.back().translation * e.given.back().translation;
+    sq_used += e.used.back().translation * e.used.back().translation;
+  }
+  if (!reference.empty()) {
+    e.ate_given = std::sqrt(sq_given / static_cast<double>(reference.size()));
+    e.ate_used = std::sqrt(sq_used / static_cast<double>(reference.size()));
+  }
+  return e;
+}
+
+}  // namespace metricmap

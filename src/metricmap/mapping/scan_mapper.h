@@ -1,0 +1,133 @@
+#pragma once
+/// \file scan_mapper.h
+/// \brief The mapping pipeline: scans in their sensor frame plus poses -> a registered global
+/// cloud and a 2D hit map. One call per scan (`addScan`), one report per call.
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <Eigen/Geometry>
+
+#include "metricmap/kitti/occupancy_map_2d.h"
+#include "metricmap/kitti/scan_registration.h"
+
+namespace metricmap {
+
+/// \brief What each scan is aligned to when registration is on.
+enum class RegistrationTarget {
+  Map,       ///< the registered scans so far, averaged in `target_voxel` cells
+  Previous,  ///< the previous scan only
+  First,     ///< the first scan only
+};
+
+/// \brief "map" | "previous" | "first". \throws std::invalid_argument
+RegistrationTarget parseRegistrationTarget(const std::string& name);
+
+/// \brief Registration of each scan (after the first) against a target, starting from the
+/// pose the caller gives.
+struct RegistrationConfig {
+  bool enabled = false;
+  RefineParams refine;                                  ///< ICP or GICP, distances, iterations
+  RegistrationTarget target = RegistrationTarget::Map;  ///< what a scan is aligned to
+  float structure_voxel = 0.2f;  ///< cell of the registration cloud of each scan (m)
+  double target_voxel = 0.2;     ///< cell of the accumulated target with `Map` (m)
+  std::size_t min_points = 20;   ///< fewer registration points in source or target: an error
+};
+
+/// \brief Parameters of ScanMapper. Ranges are in the sensor frame, heights in the world.
+struct ScanMapperConfig {
+  double min_range = 0.0;                                      ///< drop closer returns (m)
+  double max_range = std::numeric_limits<double>::infinity();  ///< drop further returns (m)
+  double voxel = 0.0;  ///< average each scan and the global cloud in cells of this size (0: off)
+  double min_height = -std::numeric_limits<double>::infinity();  ///< map band, along `up`
+  double max_height = std::numeric_limits<double>::infinity();
+  Eigen::Vector3f up = Eigen::Vector3f(0, -1, 0);  ///< the world's up axis (KITTI camera: -y)
+  MapPlane plane = MapPlane::XZ;                   ///< projection plane of the 2D map
+  double map_resolution = 0.1;                     ///< 2D map cell (m)
+  std::uint32_t min_hits = 1;                      ///< hits that make a map cell occupied
+  bool keep_global_cloud = true;                   ///< accumulate the registered scans
+  RegistrationConfig registration;
+};
+
+/// \brief \throws std::invalid_argument naming the first bad parameter
+void validateScanMapperConfig(const ScanMapperConfig& config);
+
+/// \brief What `addScan` did with one scan.
+struct FrameReport {
+  std::size_t index = 0;            ///< 0 for the first scan added
+  std::uint64_t points_read = 0;    ///< points of the scan as given
+  std::uint64_t points_kept = 0;    ///< after the range band (and the voxel, when on)
+  std::uint64_t points_mapped = 0;  ///< within the height band, counted in the 2D map
+  Eigen::Isometry3d pose_given = Eigen::Isometry3d::Identity();  ///< sensor -> world, as given
+  Eigen::Isometry3d pose_used = Eigen::Isometry3d::Identity();   ///< after registration
+  bool registered = false;                                       ///< registration ran for this scan
+  bool converged = false;  ///< PCL's hasConverged of the last stage
+  double fitness = 0.0;    ///< PCL's fitness score of the last stage
+  double seconds_register = 0.0, seconds_transform = 0.0, seconds_map = 0.0;
+};
+
+/// \brief Per-frame and RMS translation error of a trajectory against a reference.
+struct TrajectoryError {
+  std::vector<PoseError> given;  ///< reference vs the poses given to addScan
+  std::vector<PoseError> used;   ///< reference vs the poses used (registered)
+  double ate_given = 0.0;        ///< RMS of `given` translations (m)
+  double ate_used = 0.0;         ///< RMS of `used` translations (m)
+};
+
+/// \brief Scans + poses -> registered global cloud and 2D hit map.
+///
+/// Each scan is cut to the range band in its own frame, optionally registered (its pose
+/// refined against the target), moved to the world, optionally averaged in `voxel` cells, and
+/// the points within the height band are counted in the 2D map.
+/// \note Thread safety: one instance per thread.
+class ScanMapper {
+ public:
+  using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+
+  /// \throws std::invalid_argument for a bad configuration
+  explicit ScanMapper(const ScanMapperConfig& config);
+
+  /// \brief Add one scan (sensor frame) with its sensor -> world pose.
+  /// \throws InputError when registration is on and the scan or target has too few points
+  FrameReport addScan(const Cloud& scan_in_sensor, const Eigen::Isometry3d& pose);
+
+  /// \brief The 2D hit map so far.
+  const OccupancyMap2D& map() const { return map_; }
+  /// \brief Cells of the map with at least `min_hits` hits.
+  std::size_t occupiedCells() const;
+  /// \brief The registered scans in the world, averaged in `voxel` cells when it is > 0.
+  Cloud globalCloud() const;
+  /// \brief The current registration target (world frame); empty without registration.
+  const Cloud& registrationTarget() const { return *target_; }
+  /// \brief Sensor -> world poses used, one per scan added.
+  const std::vector<Eigen::Isometry3d>& poses() const { return used_; }
+  /// \brief Sensor -> world poses as given, one per scan added.
+  const std::vector<Eigen::Isometry3d>& givenPoses() const { return given_; }
+  /// \brief Error of the given and the used poses against `reference` (one per scan added).
+  /// \throws std::invalid_argument when the sizes differ
+  TrajectoryError trajectoryError(const std::vector<Eigen::Isometry3d>& reference) const;
+  const ScanMapperConfig& config() const { return config_; }
+
+ private:
+  void updateTarget(const Cloud& kept_in_sensor, const Eigen::Isometry3d& pose);
+
+  ScanMapperConfig config_;
+  OccupancyMap2D map_;
+  Cloud::Ptr global_;
+  Cloud::Ptr target_;
+  std::vector<Eigen::Isometry3d> given_, used_;
+};
+
+/// \brief The points of `scan` whose distance from the origin lies in [min_range, max_range].
+pcl::PointCloud<pcl::PointXYZ> rangeBand(const pcl::PointCloud<pcl::PointXYZ>& scan,
+                                         double min_range, double max_range);
+
+/// \brief `cloud` averaged in world-aligned cells of `voxel` (OccupancyGrid, WorldAligned).
+pcl::PointCloud<pcl::PointXYZ> voxelAverage(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                            double voxel);
+
+}  // namespace metricmap
