@@ -130,14 +130,19 @@ FrameReport ScanMapper::addScan(const Cloud& scan_in_sensor, const Eigen::Isomet
   report.seconds_transform += secondsSince(t);
 
   t = std::chrono::steady_clock::now();
-  Cloud band;
-  band.reserve(world.size());
-  for (const auto& p : world) {
-    const float h = config_.up.dot(p.getVector3fMap());
-    if (h >= config_.min_height && h <= config_.max_height) band.push_back(p);
+  if (config_.min_height == -HUGE_VAL && config_.max_height == HUGE_VAL) {
+    report.points_mapped = world.size();  // no band: every point is mapped
+    map_.add(world);
+  } else {
+    Cloud band;
+    band.reserve(world.size());
+    for (const auto& p : world) {
+      const float h = config_.up.dot(p.getVector3fMap());
+      if (h >= config_.min_height && h <= config_.max_height) band.push_back(p);
+    }
+    report.points_mapped = band.size();
+    map_.add(band);
   }
-  report.points_mapped = band.size();
-  map_.add(band);
   report.seconds_map = secondsSince(t);
   if (config_.keep_global_cloud) *global_ += world;
   given_.push_back(pose);
