@@ -33,7 +33,7 @@ struct LineSegment {
   double length() const { return (end - start).norm(); }
   /// \brief Direction of start -> end, (-pi, pi]; 0 for a zero-length segment.
   double angle() const;
-  /// \brief Unit normal u = [(y_e - y_s), -(x_e - x_s)] / length (the seed's u_perp);
+  /// \brief Unit normal u = [(y_e - y_s), -(x_e - x_s)] / length (u_perp);
   /// zero for a zero-length segment.
   Eigen::Vector2d normal() const;
   /// \brief u . (p - start): positive to the right of start -> end. For a zero-length segment,

@@ -14,7 +14,7 @@ namespace metricmap {
 /// \brief When purge runs.
 enum class PurgeOrder {
   /// After split, before merge (default): once short pieces such as chair legs are gone, merge
-  /// can join the wall pieces on either side of them (the seed's reasoning).
+  /// can join the wall pieces on either side of them.
   BeforeMerge,
   /// After merge: only the final segments are judged.
   AfterMerge
