@@ -18,6 +18,7 @@ void BM_OccupancyGrid(benchmark::State& state) {
   grid.setOrigin(GridOrigin::WorldAligned);
   grid.setCellSize(kLeaf);
   grid.setInputCloud(cloud);
+  grid.setNumberOfThreads(static_cast<unsigned>(state.range(0)));
   resetPeakRss();
   const double base = peakRssMiB();
   for (auto _ : state) {
@@ -39,6 +40,7 @@ void BM_OccupancyGridFresh(benchmark::State& state) {
     grid.setOrigin(GridOrigin::WorldAligned);
     grid.setCellSize(kLeaf);
     grid.setInputCloud(cloud);
+    grid.setNumberOfThreads(static_cast<unsigned>(state.range(0)));
     grid.filter(out);
     benchmark::DoNotOptimize(out.data());
   }
@@ -63,8 +65,18 @@ void BM_PclVoxelGrid(benchmark::State& state) {
   report(state, cloud->size(), base);
 }
 
-BENCHMARK(BM_OccupancyGrid)->Unit(benchmark::kMillisecond)->MinTime(2.0);
-BENCHMARK(BM_OccupancyGridFresh)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_OccupancyGrid)
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
+BENCHMARK(BM_OccupancyGridFresh)
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
 BENCHMARK(BM_PclVoxelGrid)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 }  // namespace

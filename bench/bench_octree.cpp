@@ -17,6 +17,7 @@ void BM_AdaptiveOctree(benchmark::State& state) {
   octree.setMaxPointsPerLeaf(kMaxPoints);
   octree.setMinCellSize(kMinCell);
   octree.setInputCloud(cloud);
+  octree.setNumberOfThreads(static_cast<unsigned>(state.range(0)));
   resetPeakRss();
   const double base = peakRssMiB();
   for (auto _ : state) octree.compute();
@@ -37,6 +38,7 @@ void BM_AdaptiveOctreeFresh(benchmark::State& state) {
     octree.setMaxPointsPerLeaf(kMaxPoints);
     octree.setMinCellSize(kMinCell);
     octree.setInputCloud(cloud);
+    octree.setNumberOfThreads(static_cast<unsigned>(state.range(0)));
     octree.compute();
     leaves = octree.getStatistics().occupied_leaves;
   }
@@ -63,8 +65,18 @@ void BM_PclOctreeDynamicDepth(benchmark::State& state) {
   report(state, cloud->size(), base);
 }
 
-BENCHMARK(BM_AdaptiveOctree)->Unit(benchmark::kMillisecond)->MinTime(2.0);
-BENCHMARK(BM_AdaptiveOctreeFresh)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_AdaptiveOctree)
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
+BENCHMARK(BM_AdaptiveOctreeFresh)
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
 BENCHMARK(BM_PclOctreeDynamicDepth)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 }  // namespace

@@ -10,7 +10,7 @@ cmake --build build/bench -j "${JOBS:-2}" --target metricmap_bench >/dev/null
 for b in BM_DataOnly BM_OccupancyGrid BM_OccupancyGridFresh BM_PclVoxelGrid BM_SortBasedGridFloor \
          BM_AdaptiveOctree BM_AdaptiveOctreeFresh BM_PclOctreeDynamicDepth \
          BM_SplitAndMergeUrg BM_SequentialRansacUrg BM_HeightMapKinectFrame \
-         BM_DepthToCloudKinectFrame BM_KittiScanTransformAccumulateMap; do
+         BM_DepthToCloudKinectFrame BM_ScanMapperAddScan; do
   build/bench/bench/metricmap_bench --benchmark_filter="^$b(/|\$)" --benchmark_repetitions=3 \
     --benchmark_report_aggregates_only=true "$@" 2>/dev/null | grep -E "_median|^BM_DataOnly"
 done

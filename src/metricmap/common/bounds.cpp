@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <limits>
+#include <vector>
 
+#include "metricmap/common/parallel.h"
 #include "metricmap/common/simd_points.h"
 
 namespace metricmap {
@@ -64,6 +66,37 @@ Bounds computeBounds(const PointSpan& points) {
   for (int a = 0; a < 3; ++a) {
     b.min[a] = lo[a];
     b.max[a] = hi[a];
+  }
+  return b;
+}
+
+PointSpan slice(const PointSpan& points, std::size_t begin, std::size_t end) {
+  PointSpan s = points;
+  s.size = end - begin;
+  if (points.indices != nullptr) {
+    s.indices = points.indices + begin;
+  } else {
+    s.base = reinterpret_cast<const float*>(reinterpret_cast<const char*>(points.base) +
+                                            begin * points.stride);
+  }
+  return s;
+}
+
+Bounds computeBounds(const PointSpan& points, unsigned threads) {
+  if (threads <= 1) return computeBounds(points);
+  std::vector<Bounds> parts(threads);
+  parallelRun(threads, [&](unsigned t) {
+    const auto [begin, end] = chunkOf(points.size, threads, t);
+    parts[t] = computeBounds(slice(points, begin, end));
+  });
+  Bounds b;
+  for (const Bounds& part : parts) {
+    if (part.finite == 0) continue;
+    for (int a = 0; a < 3; ++a) {
+      b.min[a] = b.finite == 0 ? part.min[a] : std::min(b.min[a], part.min[a]);
+      b.max[a] = b.finite == 0 ? part.max[a] : std::max(b.max[a], part.max[a]);
+    }
+    b.finite += part.finite;
   }
   return b;
 }

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "metricmap/common/huge_pages.h"
@@ -46,10 +47,55 @@ class KeySorter {
     }
   }
 
-  /// \brief Sort by key; equal keys keep their push order.
-  void sort() {
+  /// \brief Writes packed words into one chunk's region (fillParallel).
+  class Sink {
+   public:
+    Sink(std::uint64_t* out, int position_bits) : out_(out), position_bits_(position_bits) {}
+    void push(std::uint64_t key, std::uint32_t position) {
+      *out_++ = key << position_bits_ | position;
+    }
+    std::uint64_t* end() const { return out_; }
+
+   private:
+    std::uint64_t* out_;
+    int position_bits_;
+  };
+
+  /// \brief Push the keys of items [0, n) in `threads` contiguous chunks at once:
+  /// `fill(begin, end, sink)` pushes the keys of items [begin, end) in increasing position
+  /// order through `sink.push(key, position)`. The result is the same as one fill over [0, n)
+  /// (chunks are joined in order). Call after reset(n, ...).
+  template <typename Fill>
+  void fillParallel(std::size_t n, unsigned threads, Fill&& fill) {
+    if (threads <= 1 || !packed_) {
+      fill(std::size_t{0}, n, *this);
+      return;
+    }
+    words_.resize(n);  // uninitialised: each thread touches its own pages
+    std::vector<std::size_t> filled(threads);
+    parallelRun(threads, [&](unsigned t) {
+      const auto [begin, end] = chunkOf(n, threads, t);
+      Sink sink(words_.data() + begin, position_bits_);
+      fill(begin, end, sink);
+      filled[t] = static_cast<std::size_t>(sink.end() - (words_.data() + begin));
+    });
+    std::size_t total = filled[0];  // close the gaps left by skipped items, in chunk order
+    for (unsigned t = 1; t < threads; ++t) {
+      const std::size_t begin = chunkOf(n, threads, t).first;
+      if (total != begin && filled[t] > 0) {
+        std::memmove(words_.data() + total, words_.data() + begin,
+                     filled[t] * sizeof(std::uint64_t));
+      }
+      total += filled[t];
+    }
+    words_.resize(total);
+  }
+
+  /// \brief Sort by key; equal keys keep their push order. Any thread count gives the same
+  /// order.
+  void sort(unsigned threads = 1) {
     if (packed_) {
-      radixSortWords(words_, scratch_, position_bits_, key_bits_);
+      radixSortWords(words_, scratch_, position_bits_, key_bits_, threads);
     } else {
       radixSortPairs(keys_, positions_, key_bits_);
     }
@@ -69,10 +115,10 @@ class KeySorter {
   int key_bits_ = 0;
   int position_bits_ = 1;
   bool packed_ = false;
-  std::vector<std::uint64_t> words_;
+  SortWords words_;
   std::vector<std::uint64_t> keys_;
   std::vector<std::uint32_t> positions_;
-  std::vector<std::uint64_t> scratch_;
+  SortWords scratch_;
 };
 
 }  // namespace metricmap

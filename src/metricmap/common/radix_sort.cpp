@@ -29,11 +29,10 @@ int bitsFor(std::uint64_t n) {
   return bits;
 }
 
-void radixSortWords(std::vector<std::uint64_t>& words, std::vector<std::uint64_t>& scratch,
-                    int low_bit, int key_bits) {
+namespace {
+
+void serialSortWords(SortWords& words, SortWords& scratch, int low_bit, const Plan& p) {
   const std::size_t n = words.size();
-  const Plan p = plan(key_bits);
-  if (n < 2 || p.passes == 0) return;
   const std::size_t buckets = std::size_t{1} << p.digit_bits;
   const std::uint64_t mask = buckets - 1;
   // All histograms in one read pass.
@@ -56,6 +55,62 @@ void radixSortWords(std::vector<std::uint64_t>& words, std::vector<std::uint64_t
     const int shift = low_bit + k * p.digit_bits;
     for (const std::uint64_t w : words) scratch[h[(w >> shift) & mask]++] = w;
     words.swap(scratch);
+  }
+}
+
+/// Per pass: every thread counts its chunk, offsets are laid out digit by digit and within a
+/// digit chunk by chunk (stable), then every thread scatters its chunk.
+void parallelSortWords(SortWords& words, SortWords& scratch, int low_bit, const Plan& p,
+                       unsigned threads) {
+  const std::size_t n = words.size();
+  const std::size_t buckets = std::size_t{1} << p.digit_bits;
+  const std::uint64_t mask = buckets - 1;
+  reserveHuge(scratch, n);
+  scratch.resize(n);
+  std::vector<std::size_t> hist(buckets * threads);
+  for (int k = 0; k < p.passes; ++k) {
+    const int shift = low_bit + k * p.digit_bits;
+    parallelRun(threads, [&](unsigned t) {
+      std::size_t* h = &hist[t * buckets];
+      std::fill(h, h + buckets, 0);
+      const auto [begin, end] = chunkOf(n, threads, t);
+      for (std::size_t i = begin; i < end; ++i) ++h[(words[i] >> shift) & mask];
+    });
+    bool trivial = false;
+    std::size_t sum = 0;
+    for (std::size_t b = 0; b < buckets; ++b) {
+      std::size_t digit_total = 0;
+      for (unsigned t = 0; t < threads; ++t) {
+        const std::size_t c = hist[t * buckets + b];
+        hist[t * buckets + b] = sum;
+        sum += c;
+        digit_total += c;
+      }
+      trivial = trivial || digit_total == n;
+    }
+    if (trivial) continue;  // every word has the same digit: the order stays
+    parallelRun(threads, [&](unsigned t) {
+      std::size_t* h = &hist[t * buckets];
+      const auto [begin, end] = chunkOf(n, threads, t);
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::uint64_t w = words[i];
+        scratch[h[(w >> shift) & mask]++] = w;
+      }
+    });
+    words.swap(scratch);
+  }
+}
+
+}  // namespace
+
+void radixSortWords(SortWords& words, SortWords& scratch, int low_bit, int key_bits,
+                    unsigned threads) {
+  const Plan p = plan(key_bits);
+  if (words.size() < 2 || p.passes == 0) return;
+  if (threads <= 1) {
+    serialSortWords(words, scratch, low_bit, p);
+  } else {
+    parallelSortWords(words, scratch, low_bit, p, threads);
   }
 }
 

@@ -5,13 +5,20 @@
 #include <cstdint>
 #include <vector>
 
+#include "metricmap/common/parallel.h"
+
 namespace metricmap {
 
+/// \brief Words to sort: resize() leaves new words uninitialised.
+using SortWords = std::vector<std::uint64_t, UninitAllocator<std::uint64_t>>;
+
 /// \brief Sort `words` ascending by the bit field [low_bit, low_bit + key_bits), stably.
-/// Passes use up to 10-bit digits; a pass whose digit never varies is skipped.
+/// Passes use up to 10-bit digits; a pass whose digit never varies is skipped. With
+/// `threads` > 1 each pass counts and scatters contiguous chunks in parallel (chunk t's words
+/// go before chunk t+1's within a digit, so the result is the same for any thread count).
 /// \param[in,out] scratch reused between calls to avoid fresh allocations (resized as needed)
-void radixSortWords(std::vector<std::uint64_t>& words, std::vector<std::uint64_t>& scratch,
-                    int low_bit, int key_bits);
+void radixSortWords(SortWords& words, SortWords& scratch, int low_bit, int key_bits,
+                    unsigned threads = 1);
 
 /// \brief Sort `keys` ascending and permute `values` alongside; only the low `key_bits` bits
 /// of the keys are looked at. Stable.

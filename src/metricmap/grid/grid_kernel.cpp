@@ -9,13 +9,15 @@
 #include "metricmap/common/bounds.h"
 #include "metricmap/common/fast_floor.h"
 #include "metricmap/common/huge_pages.h"
+#include "metricmap/common/parallel.h"
 #include "metricmap/common/simd_points.h"
 #include "metricmap/exceptions.h"
 
 namespace metricmap {
 namespace {
 
-constexpr double kMaxAxisIndex = 4.0e18;  // well inside int64
+constexpr double kMaxAxisIndex = 4.0e18;           // well inside int64
+constexpr std::size_t kPointsPerThread = 1 << 17;  // below this, another thread does not pay
 // Float32 carries 24 significant bits; a point within that rounding of a cell boundary is
 // treated as lying on it. Twice the bound, for margin.
 constexpr double kFloatSnap = 1.0 / 8388608.0;  // 2^-23
@@ -89,21 +91,32 @@ std::uint64_t totalCells(const GridLayout& layout, float cell) {
   return total;
 }
 
-/// WorldAligned keys of a whole cloud, x, y, z in one SSE2 register: floor(p * inv) in float
-/// exactly as the scalar path (and pcl::VoxelGrid) computes it. False, doing nothing, unless
-/// loadsFourFloats and every cell index is within +-2^30 (int32 conversions).
-bool worldKeysFast(const PointSpan& points, float inv, const GridLayout& L, KeySorter& sorter) {
+/// True when the SSE2 WorldAligned key path applies: a whole cloud (loadsFourFloats) and every
+/// cell index within +-2^30 (int32 conversions).
+bool worldKeysFastApplies(const PointSpan& points, const GridLayout& L) {
 #if defined(__SSE2__)
   for (int a = 0; a < 3; ++a) {
     if (std::abs(L.min_index[a]) >= (1 << 30) || L.dims[a] >= (1u << 30)) return false;
   }
-  if (!loadsFourFloats(points)) return false;
+  return loadsFourFloats(points);
+#else
+  (void)points, (void)L;
+  return false;
+#endif
+}
+
+/// WorldAligned keys of points [begin, end), x, y, z in one SSE2 register: floor(p * inv) in
+/// float exactly as the scalar path (and pcl::VoxelGrid) computes it.
+template <typename Sink>
+void worldKeysFast(const PointSpan& points, std::size_t begin, std::size_t end, float inv,
+                   const GridLayout& L, Sink& sink) {
+#if defined(__SSE2__)
   const std::uint64_t nx = L.dims[0], nxy = L.dims[0] * L.dims[1];
   const __m128 scale = _mm_set1_ps(inv);
   const __m128i offset =
       _mm_setr_epi32(static_cast<int>(L.min_index[0]), static_cast<int>(L.min_index[1]),
                      static_cast<int>(L.min_index[2]), 0);
-  for (std::size_t i = 0; i < points.size; ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
     const __m128 v = loadPoint(points, i);
     if (!finiteXyz(v)) continue;
     const __m128 s = _mm_mul_ps(v, scale);
@@ -111,15 +124,58 @@ bool worldKeysFast(const PointSpan& points, float inv, const GridLayout& L, KeyS
     t = _mm_add_epi32(t, _mm_castps_si128(_mm_cmplt_ps(s, _mm_cvtepi32_ps(t))));
     alignas(16) std::int32_t k[4];
     _mm_store_si128(reinterpret_cast<__m128i*>(k), _mm_sub_epi32(t, offset));
-    sorter.push(static_cast<std::uint64_t>(k[0]) + nx * static_cast<std::uint64_t>(k[1]) +
-                    nxy * static_cast<std::uint64_t>(k[2]),
-                static_cast<std::uint32_t>(i));
+    sink.push(static_cast<std::uint64_t>(k[0]) + nx * static_cast<std::uint64_t>(k[1]) +
+                  nxy * static_cast<std::uint64_t>(k[2]),
+              static_cast<std::uint32_t>(i));
   }
-  return true;
 #else
-  (void)points, (void)inv, (void)L, (void)sorter;
-  return false;
+  (void)points, (void)begin, (void)end, (void)inv, (void)L, (void)sink;
 #endif
+}
+
+/// Cells of the sorted keys [begin, end) (which start and end at key changes), appended.
+void accumulateCells(const PointSpan& points, const KeySorter& sorter, const GridLayout& L,
+                     std::size_t begin_at, std::size_t end_at, std::vector<GridCell>& cells) {
+  const std::uint64_t nx = L.dims[0], nxy = L.dims[0] * L.dims[1];
+  const std::size_t n = sorter.size();
+  constexpr std::size_t kAhead = 48;  // prefetch distance, measured (docs/NOTES.md)
+  std::uint64_t row_start = 0;        // key of (0, iy, iz) for the row of the previous cell
+  std::int64_t iy = 0, iz = 0;
+  bool have_row = false;
+  for (std::size_t begin = begin_at; begin < end_at;) {
+    const std::uint64_t key = sorter.key(begin);
+    double sx = 0.0, sy = 0.0, sz = 0.0;
+    std::size_t end = begin;
+    for (; end < end_at && sorter.key(end) == key; ++end) {
+      if (end + kAhead < n) __builtin_prefetch(points.at(sorter.position(end + kAhead)));
+      const float* p = points.at(sorter.position(end));
+      sx += p[0];
+      sy += p[1];
+      sz += p[2];
+    }
+    if (!have_row || key - row_start >= nx) {  // sorted keys: most cells share the last row
+      const std::uint64_t z = key / nxy, y = (key - z * nxy) / nx;
+      iz = static_cast<std::int64_t>(z);
+      iy = static_cast<std::int64_t>(y);
+      row_start = z * nxy + y * nx;
+      have_row = true;
+    }
+    GridCell c;
+    c.index = {L.min_index[0] + static_cast<std::int64_t>(key - row_start), L.min_index[1] + iy,
+               L.min_index[2] + iz};
+    c.count = end - begin;
+    c.mean = Eigen::Vector3d(sx, sy, sz) / static_cast<double>(c.count);
+    c.first_point = points.sourceIndex(sorter.position(begin));
+    cells.push_back(c);
+    begin = end;
+  }
+}
+
+/// Runs (distinct keys) among sorted keys [begin, end).
+std::size_t countRuns(const KeySorter& sorter, std::size_t begin, std::size_t end) {
+  std::size_t runs = end > begin ? 1 : 0;
+  for (std::size_t i = begin + 1; i < end; ++i) runs += sorter.key(i) != sorter.key(i - 1);
+  return runs;
 }
 
 }  // namespace
@@ -145,7 +201,8 @@ void buildGrid(const PointSpan& points, const GridParams& params, GridWorkspace&
   result.layout = GridLayout();
   result.cells.clear();
   result.stats = GridStatistics();
-  const Bounds bounds = computeBounds(points);
+  const unsigned threads = resolveThreads(params.threads, points.size, kPointsPerThread);
+  const Bounds bounds = computeBounds(points, threads);
   result.stats.skipped_points = points.size - bounds.finite;
   if (bounds.finite == 0) return;
 
@@ -163,8 +220,13 @@ void buildGrid(const PointSpan& points, const GridParams& params, GridWorkspace&
   // Linear cell key of every finite point, then a radix sort: equal keys become runs.
   KeySorter& sorter = workspace.sorter;
   sorter.reset(points.size, bitsFor(result.stats.total_cells));
-  if (cloud_min || !worldKeysFast(points, inv, L, sorter)) {
-    for (std::size_t i = 0; i < points.size; ++i) {
+  const bool fast = !cloud_min && worldKeysFastApplies(points, L);
+  sorter.fillParallel(points.size, threads, [&](std::size_t begin, std::size_t end, auto& sink) {
+    if (fast) {
+      worldKeysFast(points, begin, end, inv, L, sink);
+      return;
+    }
+    for (std::size_t i = begin; i < end; ++i) {
       const float* p = points.at(i);
       if (!isFinitePoint(p)) continue;
       std::uint64_t k[3];
@@ -172,46 +234,34 @@ void buildGrid(const PointSpan& points, const GridParams& params, GridWorkspace&
         k[a] = cloud_min ? snappedIndex(p[a], mn[a], cell)
                          : static_cast<std::uint64_t>(floorToInt(p[a] * inv) - L.min_index[a]);
       }
-      sorter.push(k[0] + nx * k[1] + nxy * k[2], static_cast<std::uint32_t>(i));
+      sink.push(k[0] + nx * k[1] + nxy * k[2], static_cast<std::uint32_t>(i));
     }
-  }
-  sorter.sort();
+  });
+  sorter.sort(threads);
 
+  // Cells: the sorted keys cut into one range per thread at key changes; each range's cells
+  // are summed in sorted order, so the sums do not depend on the cut.
   const std::size_t n = sorter.size();
-  std::size_t runs = n > 0 ? 1 : 0;
-  for (std::size_t i = 1; i < n; ++i) runs += sorter.key(i) != sorter.key(i - 1);
-  reserveHuge(result.cells, runs);
-
-  constexpr std::size_t kAhead = 48;  // prefetch distance, measured (docs/BENCHMARKS.md)
-  std::uint64_t row_start = 0;        // key of (0, iy, iz) for the row of the previous cell
-  std::int64_t iy = 0, iz = 0;
-  bool have_row = false;
-  for (std::size_t begin = 0; begin < n;) {
-    const std::uint64_t key = sorter.key(begin);
-    double sx = 0.0, sy = 0.0, sz = 0.0;
-    std::size_t end = begin;
-    for (; end < n && sorter.key(end) == key; ++end) {
-      if (end + kAhead < n) __builtin_prefetch(points.at(sorter.position(end + kAhead)));
-      const float* p = points.at(sorter.position(end));
-      sx += p[0];
-      sy += p[1];
-      sz += p[2];
-    }
-    if (!have_row || key - row_start >= nx) {  // sorted keys: most cells share the last row
-      const std::uint64_t z = key / nxy, y = (key - z * nxy) / nx;
-      iz = static_cast<std::int64_t>(z);
-      iy = static_cast<std::int64_t>(y);
-      row_start = z * nxy + y * nx;
-      have_row = true;
-    }
-    GridCell c;
-    c.index = {L.min_index[0] + static_cast<std::int64_t>(key - row_start), L.min_index[1] + iy,
-               L.min_index[2] + iz};
-    c.count = end - begin;
-    c.mean = Eigen::Vector3d(sx, sy, sz) / static_cast<double>(c.count);
-    c.first_point = points.sourceIndex(sorter.position(begin));
-    result.cells.push_back(c);
-    begin = end;
+  std::vector<std::size_t> cuts(threads + 1, n);
+  cuts[0] = 0;
+  for (unsigned t = 1; t < threads; ++t) {
+    std::size_t c = std::max(cuts[t - 1], chunkOf(n, threads, t).first);
+    while (c > 0 && c < n && sorter.key(c) == sorter.key(c - 1)) ++c;
+    cuts[t] = c;
+  }
+  std::vector<std::size_t> runs(threads);
+  parallelRun(threads, [&](unsigned t) { runs[t] = countRuns(sorter, cuts[t], cuts[t + 1]); });
+  std::size_t total_runs = 0;
+  for (std::size_t r : runs) total_runs += r;
+  reserveHuge(result.cells, total_runs);
+  std::vector<std::vector<GridCell>> parts(threads > 1 ? threads - 1 : 0);
+  parallelRun(threads, [&](unsigned t) {
+    std::vector<GridCell>& out = t == 0 ? result.cells : parts[t - 1];
+    if (t > 0) reserveHuge(out, runs[t]);
+    accumulateCells(points, sorter, L, cuts[t], cuts[t + 1], out);
+  });
+  for (const std::vector<GridCell>& part : parts) {
+    result.cells.insert(result.cells.end(), part.begin(), part.end());
   }
   GridStatistics& s = result.stats;
   s.points = bounds.finite;

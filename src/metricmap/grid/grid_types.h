@@ -23,6 +23,9 @@ enum class GridOrigin {
 struct GridParams {
   float cell_size = 1.0f;  ///< edge of a cubic cell, metres; finite and > 0
   GridOrigin origin = GridOrigin::CloudMinimum;
+  /// Threads for a build: 0 = all hardware threads, 1 = single-threaded. The cells, counts
+  /// and means do not depend on it (bit for bit). Small clouds use fewer threads.
+  unsigned threads = 0;
 };
 
 /// \brief Figures of one grid, as in the study's table.

@@ -9,6 +9,7 @@
 #include "metricmap/common/bounds.h"
 #include "metricmap/common/fast_floor.h"
 #include "metricmap/common/huge_pages.h"
+#include "metricmap/common/parallel.h"
 #include "metricmap/common/simd_points.h"
 #include "metricmap/exceptions.h"
 
@@ -113,8 +114,7 @@ bool insideRoot(const float* p, const Frame& f) {
 /// tables and no axis is flat: the table position is estimated for x, y, z at once in SSE2
 /// float arithmetic and then settled exactly against the tables in double, as quantize() does
 /// (the settled position does not depend on the estimate). False when it does not apply.
-bool mortonKeysFast(const PointSpan& points, const Frame& f, const OctreeParams& params,
-                    KeySorter& sorter) {
+bool mortonKeysFastApplies(const PointSpan& points, const Frame& f, const OctreeParams& params) {
 #if defined(__SSE2__)
   if (!loadsFourFloats(points) || params.has_root_box || f.table_levels != f.levels ||
       f.levels > 16) {
@@ -123,6 +123,18 @@ bool mortonKeysFast(const PointSpan& points, const Frame& f, const OctreeParams&
   for (int a = 0; a < 3; ++a) {
     if (!(f.max[a] > f.min[a])) return false;
   }
+  return true;
+#else
+  (void)points, (void)f, (void)params;
+  return false;
+#endif
+}
+
+/// Morton keys of points [begin, end) (when mortonKeysFastApplies).
+template <typename Sink>
+void mortonKeysFast(const PointSpan& points, std::size_t begin, std::size_t end, const Frame& f,
+                    Sink& sink) {
+#if defined(__SSE2__)
   static const std::array<std::uint64_t, 256> spread8 = [] {
     std::array<std::uint64_t, 256> t{};
     for (std::uint64_t i = 0; i < 256; ++i) t[i] = spreadBits(i);
@@ -136,7 +148,7 @@ bool mortonKeysFast(const PointSpan& points, const Frame& f, const OctreeParams&
   const __m128 vtop = _mm_set1_ps(static_cast<float>(top));
   const __m128 zero = _mm_setzero_ps();
   const double* breaks[3] = {f.breaks[0].data(), f.breaks[1].data(), f.breaks[2].data()};
-  for (std::size_t i = 0; i < points.size; ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
     const float* p = points.at(i);
     const __m128 v = _mm_loadu_ps(p);
     if (!finiteXyz(v)) continue;
@@ -152,12 +164,10 @@ bool mortonKeysFast(const PointSpan& points, const Frame& f, const OctreeParams&
       while (j > 0 && b[j] > pd) --j;
       key |= (spread8[j & 255] | spread8[(j >> 8) & 255] << 24) << a;
     }
-    sorter.push(key, static_cast<std::uint32_t>(i));
+    sink.push(key, static_cast<std::uint32_t>(i));
   }
-  return true;
 #else
-  (void)points, (void)f, (void)params, (void)sorter;
-  return false;
+  (void)points, (void)begin, (void)end, (void)f, (void)sink;
 #endif
 }
 
@@ -189,30 +199,39 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
   r.point_order.clear();
   r.occupied_leaves.clear();
   r.stats = OctreeStatistics();
-  const Bounds bounds = computeBounds(points);
+  const unsigned threads = resolveThreads(params.threads, points.size, std::size_t{1} << 17);
+  const Bounds bounds = computeBounds(points, threads);
   const Frame frame = makeFrame(bounds, params);
   if (points.size > 0xFFFFFFFFull) throw CapacityError("octree: more than 2^32 points");
 
   // Morton keys of the points inside the root at leaf level `frame.levels`, radix-sorted.
   KeySorter& sorter = workspace.sorter;
   sorter.reset(points.size, 3 * static_cast<int>(frame.levels));
-  if (!mortonKeysFast(points, frame, params, sorter)) {
-    for (std::size_t i = 0; i < points.size; ++i) {
+  const bool fast = mortonKeysFastApplies(points, frame, params);
+  sorter.fillParallel(points.size, threads, [&](std::size_t begin, std::size_t end, auto& sink) {
+    if (fast) {
+      mortonKeysFast(points, begin, end, frame, sink);
+      return;
+    }
+    for (std::size_t i = begin; i < end; ++i) {
       const float* p = points.at(i);
       if (!isFinitePoint(p) || (params.has_root_box && !insideRoot(p, frame))) continue;
-      sorter.push(spreadBits(frame.quantize(0, p[0])) | spreadBits(frame.quantize(1, p[1])) << 1 |
-                      spreadBits(frame.quantize(2, p[2])) << 2,
-                  static_cast<std::uint32_t>(i));
+      sink.push(spreadBits(frame.quantize(0, p[0])) | spreadBits(frame.quantize(1, p[1])) << 1 |
+                    spreadBits(frame.quantize(2, p[2])) << 2,
+                static_cast<std::uint32_t>(i));
     }
-  }
-  sorter.sort();
+  });
+  sorter.sort(threads);
   const std::size_t n = sorter.size();
   r.stats.skipped_points = points.size - n;
   reserveHuge(r.point_order, n);
   r.point_order.resize(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    r.point_order[k] = static_cast<std::uint32_t>(points.sourceIndex(sorter.position(k)));
-  }
+  parallelRun(threads, [&](unsigned t) {
+    const auto [begin, end] = chunkOf(n, threads, t);
+    for (std::size_t k = begin; k < end; ++k) {
+      r.point_order[k] = static_cast<std::uint32_t>(points.sourceIndex(sorter.position(k)));
+    }
+  });
 
   // Top-down build over the sorted keys; children of a node are 8 consecutive ranges.
   OctreeNode root;
@@ -281,20 +300,30 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
   sums.assign(r.nodes.size(), Eigen::Vector3d::Zero());
   OctreeStatistics& s = r.stats;
   constexpr std::size_t kAhead = 48;  // prefetch distance, measured (docs/BENCHMARKS.md)
-  for (const std::size_t id : r.occupied_leaves) {
-    const OctreeNode& node = r.nodes[id];
-    double sx = 0.0, sy = 0.0, sz = 0.0;
-    const std::size_t end = node.first_point + node.count;
-    for (std::size_t k = node.first_point; k < end; ++k) {
-      if (k + kAhead < n) __builtin_prefetch(points.at(sorter.position(k + kAhead)));
-      const float* p = points.at(sorter.position(k));
-      sx += p[0];
-      sy += p[1];
-      sz += p[2];
+  // Leaf sums in parallel over contiguous runs of leaves (each leaf's sum is its own, in
+  // sorted order); the point count is an integer sum.
+  const std::size_t leaves = r.occupied_leaves.size();
+  const unsigned sum_threads = resolveThreads(threads, n, std::size_t{1} << 17);
+  std::vector<std::uint64_t> leaf_points(sum_threads, 0);
+  parallelRun(sum_threads, [&](unsigned t) {
+    const auto [first, last] = chunkOf(leaves, sum_threads, t);
+    for (std::size_t j = first; j < last; ++j) {
+      const std::size_t id = r.occupied_leaves[j];
+      const OctreeNode& node = r.nodes[id];
+      double sx = 0.0, sy = 0.0, sz = 0.0;
+      const std::size_t end = node.first_point + node.count;
+      for (std::size_t k = node.first_point; k < end; ++k) {
+        if (k + kAhead < n) __builtin_prefetch(points.at(sorter.position(k + kAhead)));
+        const float* p = points.at(sorter.position(k));
+        sx += p[0];
+        sy += p[1];
+        sz += p[2];
+      }
+      sums[id] = Eigen::Vector3d(sx, sy, sz);
+      leaf_points[t] += node.count;
     }
-    sums[id] = Eigen::Vector3d(sx, sy, sz);
-    s.points += node.count;
-  }
+  });
+  for (std::uint64_t c : leaf_points) s.points += c;
   // One sweep from the last node back: children come after their parents, so a node's sum is
   // complete when the sweep reaches it (then it is passed on to the parent).
   for (std::size_t id = r.nodes.size(); id-- > 0;) {

@@ -24,6 +24,9 @@ struct OctreeParams {
   bool has_root_box = false;              ///< use root_min / root_max instead of the cloud's bounds
   Eigen::Vector3d root_min = Eigen::Vector3d::Zero();
   Eigen::Vector3d root_max = Eigen::Vector3d::Zero();
+  /// Threads for a build: 0 = all hardware threads, 1 = single-threaded. The nodes, counts and
+  /// means do not depend on it (bit for bit). Small clouds use fewer threads.
+  unsigned threads = 0;
 };
 
 /// \brief Figures of one octree, as in the study's table.

@@ -1,0 +1,118 @@
+// Builds with 1, 2, 3 and 5 threads (oversubscribed on this machine) give the same cells,
+// nodes, counts and means, bit for bit, on real KITTI points (with NaN points and an index
+// subset as well); the VoxelGrid-equivalent grid keeps its cell count.
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "metricmap/grid/occupancy_grid.h"
+#include "metricmap/io/cloud_reader.h"
+#include "metricmap/kitti/kitti_sequence.h"
+#include "metricmap/octree/adaptive_octree.h"
+#include "test_data.h"
+
+namespace metricmap {
+namespace {
+
+using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+
+/// Frames 0-5 of the bundled KITTI sequence (746 k points: enough for five threads), with a
+/// NaN point every 1000.
+Cloud::ConstPtr kittiFrames() {
+  static const Cloud::ConstPtr cloud = [] {
+    auto c = std::make_shared<Cloud>();
+    const KittiSequence seq{dataPath("kitti_odometry_00"), "00"};
+    for (std::size_t i = 0; i < 6; ++i) {
+      Cloud scan;
+      loadCloud(seq.scan(i), scan);
+      for (auto& p : scan) p.x += 40.0f * static_cast<float>(i);  // six scans side by side
+      *c += scan;
+    }
+    for (std::size_t i = 0; i < c->size(); i += 1000) (*c)[i].y = std::nanf("");
+    return c;
+  }();
+  return cloud;
+}
+
+bool sameBits(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::memcmp(a.data(), b.data(), sizeof(double) * 3) == 0;
+}
+
+void expectSameGrid(const OccupancyGrid<pcl::PointXYZ>& a, const OccupancyGrid<pcl::PointXYZ>& b,
+                    unsigned threads) {
+  ASSERT_EQ(a.getCells().size(), b.getCells().size()) << threads << " threads";
+  EXPECT_EQ(a.getStatistics().total_cells, b.getStatistics().total_cells);
+  EXPECT_EQ(a.getStatistics().skipped_points, b.getStatistics().skipped_points);
+  for (std::size_t i = 0; i < a.getCells().size(); ++i) {
+    const GridCell &x = a.getCells()[i], &y = b.getCells()[i];
+    ASSERT_EQ(x.index, y.index) << "cell " << i << ", " << threads << " threads";
+    ASSERT_EQ(x.count, y.count) << "cell " << i;
+    ASSERT_EQ(x.first_point, y.first_point) << "cell " << i;
+    ASSERT_TRUE(sameBits(x.mean, y.mean)) << "cell " << i << ", " << threads << " threads";
+  }
+}
+
+TEST(Threads, GridCellsAndMeansDoNotDependOnTheThreadCount) {
+  const auto cloud = kittiFrames();
+  auto subset = std::make_shared<pcl::Indices>();
+  for (int i = 0; i < static_cast<int>(cloud->size()); i += 3) subset->push_back(i);
+  for (GridOrigin origin : {GridOrigin::WorldAligned, GridOrigin::CloudMinimum}) {
+    for (bool with_indices : {false, true}) {
+      OccupancyGrid<pcl::PointXYZ> one;
+      one.setInputCloud(cloud);
+      if (with_indices) one.setIndices(subset);
+      one.setCellSize(0.1f);
+      one.setOrigin(origin);
+      one.setNumberOfThreads(1);
+      one.compute();
+      ASSERT_GT(one.getCells().size(), 100000u);
+      for (unsigned threads : {2u, 3u, 5u}) {
+        OccupancyGrid<pcl::PointXYZ> many;
+        many.setInputCloud(cloud);
+        if (with_indices) many.setIndices(subset);
+        many.setCellSize(0.1f);
+        many.setOrigin(origin);
+        many.setNumberOfThreads(threads);
+        many.compute();
+        expectSameGrid(one, many, threads);
+      }
+    }
+  }
+}
+
+TEST(Threads, OctreeNodesAndMeansDoNotDependOnTheThreadCount) {
+  const auto cloud = kittiFrames();
+  for (bool cubic : {false, true}) {
+    AdaptiveOctree<pcl::PointXYZ> one;
+    one.setInputCloud(cloud);
+    one.setMaxPointsPerLeaf(20);
+    one.setMinCellSize(0.2f);
+    one.setCubicRoot(cubic);
+    one.setNumberOfThreads(1);
+    one.compute();
+    ASSERT_GT(one.getNodes().size(), 100000u);
+    for (unsigned threads : {2u, 3u, 5u}) {
+      AdaptiveOctree<pcl::PointXYZ> many;
+      many.setInputCloud(cloud);
+      many.setMaxPointsPerLeaf(20);
+      many.setMinCellSize(0.2f);
+      many.setCubicRoot(cubic);
+      many.setNumberOfThreads(threads);
+      many.compute();
+      const auto &a = one.getNodes(), &b = many.getNodes();
+      ASSERT_EQ(a.size(), b.size()) << threads << " threads";
+      EXPECT_EQ(one.getStatistics().points, many.getStatistics().points);
+      EXPECT_EQ(one.getStatistics().occupied_leaves, many.getStatistics().occupied_leaves);
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        ASSERT_EQ(a[i].count, b[i].count) << "node " << i;
+        ASSERT_EQ(a[i].first_point, b[i].first_point) << "node " << i;
+        ASSERT_EQ(a[i].depth, b[i].depth) << "node " << i;
+        ASSERT_TRUE(sameBits(a[i].mean, b[i].mean)) << "node " << i << ", " << threads;
+        ASSERT_TRUE(sameBits(a[i].min, b[i].min) && sameBits(a[i].max, b[i].max)) << i;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace metricmap
