@@ -7,7 +7,17 @@ namespace metricmap::cli {
 void addCameraOptions(CLI::App& app, CameraOptions& o) {
   auto* group = app.add_option_group("intrinsics", "Camera intrinsics (exactly one)");
   group->add_option("--camera", o.camera_file, "PCL grabber .xml or Open3D camera .json");
-  group->add_option("--intrinsics", o.intrinsics, "fx,fy,cx,cy in pixels");
+  group->add_option("--intrinsics", o.intrinsics, "fx,fy,cx,cy in pixels")
+      ->check(CLI::Validator(
+          [](std::string& s) -> std::string {
+            try {
+              parseIntrinsics(s);  // four finite numbers, fx, fy > 0: else a usage error
+            } catch (const std::invalid_argument& e) {
+              return e.what();
+            }
+            return std::string();
+          },
+          "FX,FY,CX,CY"));
   group->add_option("--hfov-deg", o.hfov_deg, "Horizontal field of view, degrees")
       ->check(kFinitePositive & CLI::Range(0.0, 179.999));
   group->require_option(1);

@@ -3,34 +3,56 @@
 #include <cmath>
 #include <iostream>
 
+#include "metricmap/common/parse_number.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
 #include "table.h"
 
 namespace metricmap::cli {
 
+namespace {
+
+/// The value through the library's checked parser; "" or the reason it is refused.
+std::string checkedDouble(const std::string& s, double& v) {
+  try {
+    v = parseFiniteDouble(s, "value");
+  } catch (const std::invalid_argument&) {
+    return "'" + quoteForMessage(s) + "' is not a finite decimal number";
+  }
+  return std::string();
+}
+
+}  // namespace
+
+const CLI::Validator kFinite(
+    [](std::string& s) -> std::string {
+      double v = 0.0;
+      return checkedDouble(s, v);
+    },
+    "FINITE");
+
 const CLI::Validator kFinitePositive(
     [](std::string& s) -> std::string {
       double v = 0.0;
-      if (!CLI::detail::lexical_cast(s, v)) return "'" + s + "' is not a number";
-      if (!std::isfinite(v) || !(v > 0.0)) return "must be a finite number > 0, got " + s;
-      return std::string();
+      std::string why = checkedDouble(s, v);
+      if (why.empty() && !(v > 0.0)) why = "must be a finite number > 0, got " + s;
+      return why;
     },
     "POSITIVE");
 
 const CLI::Validator kFiniteNonNegative(
     [](std::string& s) -> std::string {
       double v = 0.0;
-      if (!CLI::detail::lexical_cast(s, v)) return "'" + s + "' is not a number";
-      if (!std::isfinite(v) || v < 0.0) return "must be a finite number >= 0, got " + s;
-      return std::string();
+      std::string why = checkedDouble(s, v);
+      if (why.empty() && !(v >= 0.0)) why = "must be a finite number >= 0, got " + s;
+      return why;
     },
     "NONNEGATIVE");
 
 const CLI::Validator kCount(
     [](std::string& s) -> std::string {
       if (s.empty() || s.size() > 18 || s.find_first_not_of("0123456789") != std::string::npos) {
-        return "must be a whole number >= 0, got '" + s + "'";
+        return "must be a whole number >= 0, got '" + quoteForMessage(s) + "'";
       }
       return std::string();
     },
@@ -67,6 +89,7 @@ void emitTable(const Table& table, const std::string& format, const std::string&
 void emit(const std::string& text, const std::string& path) {
   if (path.empty()) {
     std::cout << text << std::flush;
+    if (!std::cout) throw std::runtime_error("cannot write to standard output");
   } else {
     writeTextAtomic(path, text);
   }

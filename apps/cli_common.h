@@ -3,6 +3,7 @@
 /// \brief Shared pieces of the `metricmap` subcommands: validators, loading, output formats.
 
 #include <chrono>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,15 @@
 #include "metricmap/io/load_report.h"
 
 namespace metricmap::cli {
+
+/// \brief A usage error found after parsing (a bad combination or value of options): exit 2.
+class UsageError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+/// \brief Any finite decimal number (metricmap::parseFiniteDouble: no hex, inf, nan, garbage).
+extern const CLI::Validator kFinite;
 
 /// \brief A finite number > 0 (CLI11's PositiveNumber lets NaN through).
 extern const CLI::Validator kFinitePositive;

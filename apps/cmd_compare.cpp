@@ -6,6 +6,8 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "metricmap/grid/occupancy_grid.h"
+#include "metricmap/io/cloud_writer.h"
+#include "metricmap/io/output_set.h"
 #include "metricmap/octree/adaptive_octree.h"
 #include "pcl_peer.h"
 #include "stats_json.h"
@@ -119,7 +121,7 @@ std::string render(const std::vector<Record>& records, const CompareOptions& o) 
   return t.render(style);
 }
 
-void plot(const std::vector<Record>& records, const CompareOptions& o) {
+void plot(const std::vector<Record>& records, const CompareOptions& o, const std::string& path) {
   std::vector<std::string> categories;
   PlotPanel total{"cells / nodes in all", false, {}},
       occupied{"occupied cells / leaves", false, {}}, empty{"empty cells / leaves", false, {}},
@@ -145,7 +147,7 @@ void plot(const std::vector<Record>& records, const CompareOptions& o) {
   if (o.pcl_octree) occupied.series.push_back({"pcl::octree leaves", p_leaves});
   empty.series = {{"grid", g_empty}, {"octree", o_empty}};
   mean.series = {{"grid", g_mean}, {"octree", o_mean}};
-  writeStudyPlot(o.plot, categories, {total, occupied, empty, mean});
+  writeStudyPlot(path, categories, {total, occupied, empty, mean});
 }
 
 void runCompare(const CompareOptions& o) {
@@ -164,8 +166,13 @@ void runCompare(const CompareOptions& o) {
       records.back().load_s = loaded.seconds;
     }
   }
-  emit(render(records, o), o.out);
-  if (!o.plot.empty()) plot(records, o);
+  // The table file and the plot are committed together: a failed plot leaves no table behind.
+  const std::string table = render(records, o);
+  OutputSet outputs;
+  if (!o.out.empty()) writeTextAtomic(outputs.stage(o.out), table);
+  if (!o.plot.empty()) plot(records, o, outputs.stage(o.plot));
+  outputs.commit();
+  if (o.out.empty()) emit(table, "");
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "metricmap/grid/occupancy_grid.h"
 #include "metricmap/io/cloud_writer.h"
+#include "metricmap/io/output_set.h"
 #include "stats_json.h"
 #include "table.h"
 
@@ -45,8 +46,10 @@ void runGrid(const GridOptions& o) {
   grid.filter(means);
   const double grid_s = secondsSince(t1);
 
-  if (!o.out.empty()) savePcdAtomic(o.out, means, parsePcdFormat(o.pcd_format));
-  if (!o.cells.empty()) writeTextAtomic(o.cells, cellsCsv(grid.getCells()));
+  OutputSet outputs;
+  if (!o.out.empty()) savePcdAtomic(outputs.stage(o.out), means, parsePcdFormat(o.pcd_format));
+  if (!o.cells.empty()) writeTextAtomic(outputs.stage(o.cells), cellsCsv(grid.getCells()));
+  outputs.commit();
 
   const GridStatistics& s = grid.getStatistics();
   if (o.format == "json") {

@@ -9,11 +9,14 @@
 #include "camera_options.h"
 #include "cli_common.h"
 #include "commands.h"
+#include "metricmap/common/memory_budget.h"
+#include "metricmap/common/parse_number.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/height/depth_to_cloud.h"
 #include "metricmap/height/floor_fit.h"
 #include "metricmap/height/height_map.h"
 #include "metricmap/io/array_writers.h"
+#include "metricmap/io/output_set.h"
 #include "table.h"
 
 namespace metricmap::cli {
@@ -29,26 +32,22 @@ struct HeightMapOptions {
   bool auto_floor = false;
   double resolution = 0.05, floor_distance = 0.02;
   long long map_size = 0, obstacle_threshold = 1;
-  std::vector<double> z_bins;
+  std::string z_bins;
 };
 
+/// A list option through the checked parser; a refused list is a usage error (exit 2).
 std::vector<double> parseNumbers(const std::string& text, const std::string& what) {
-  std::vector<double> v;
-  std::istringstream is(text);
-  for (std::string item; std::getline(is, item, ',');) {
-    char* end = nullptr;
-    const double x = std::strtod(item.c_str(), &end);
-    if (item.empty() || *end != '\0' || !std::isfinite(x)) {
-      throw std::invalid_argument(what + ": '" + item + "' is not a finite number");
-    }
-    v.push_back(x);
+  try {
+    return parseDoubleList(text, what);
+  } catch (const std::invalid_argument& e) {
+    throw CLI::ValidationError(what, e.what());
   }
-  return v;
 }
 
 Eigen::Isometry3d poseFromMatrix(const std::string& text) {
   const std::vector<double> m = parseNumbers(text, "--pose-matrix");
-  if (m.size() != 16) throw std::invalid_argument("--pose-matrix needs 16 numbers (row-major 4x4)");
+  if (m.size() != 16)
+    throw CLI::ValidationError("--pose-matrix", "needs 16 numbers (row-major 4x4)");
   Eigen::Matrix4d t;
   for (int i = 0; i < 16; ++i) t(i / 4, i % 4) = m[static_cast<std::size_t>(i)];
   Eigen::Isometry3d pose;
@@ -63,14 +62,23 @@ std::vector<Eigen::Isometry3d> readTrajectory(const std::string& path, std::size
   std::vector<Eigen::Isometry3d> poses;
   std::string line;
   for (std::size_t n = 1; std::getline(in, line) && poses.size() < frames; ++n) {
-    if (line.empty() || line[0] == '#') continue;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos || line[0] == '#') continue;
     std::istringstream is(line);
     double v[8];
+    std::string token;
     for (double& x : v) {
-      if (!(is >> x) || !std::isfinite(x)) {
+      try {
+        if (!(is >> token)) throw std::invalid_argument("too few numbers");
+        x = parseFiniteDouble(token, "value");
+      } catch (const std::invalid_argument&) {
         throw InputError(path + ": line " + std::to_string(n) +
-                         " is not 'timestamp tx ty tz qx qy qz qw'");
+                         " is not 'timestamp tx ty tz qx qy qz qw' (8 finite numbers)");
       }
+    }
+    if (is >> token) {
+      throw InputError(path + ": line " + std::to_string(n) +
+                       " has more than 8 numbers ('timestamp tx ty tz qx qy qz qw')");
     }
     Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
     if (q.norm() < 1e-9)
@@ -96,7 +104,7 @@ std::vector<std::uint8_t> layerColour(std::size_t bin, std::size_t bins) {
   return {c[0], c[1], c[2]};
 }
 
-void writeImages(const HeightMap& map, const std::string& prefix) {
+void writeImages(const HeightMap& map, const std::string& prefix, OutputSet& outputs) {
   const int n = static_cast<int>(map.size());
   std::vector<std::uint8_t> obstacles(static_cast<std::size_t>(n) * n), explored(obstacles.size()),
       layers(obstacles.size() * 3, 0);
@@ -119,10 +127,11 @@ void writeImages(const HeightMap& map, const std::string& prefix) {
       }
     }
   }
-  writePng(prefix + "_obstacles.png", n, n, 1, obstacles);
-  writePng(prefix + "_explored.png", n, n, 1, explored);
-  writePng(prefix + "_layers.png", n, n, 3, layers);
-  writeNpyUint32(prefix + "_counts.npy", {map.size(), map.size(), map.bins()}, map.counts());
+  writePng(outputs.stage(prefix + "_obstacles.png"), n, n, 1, obstacles);
+  writePng(outputs.stage(prefix + "_explored.png"), n, n, 1, explored);
+  writePng(outputs.stage(prefix + "_layers.png"), n, n, 3, layers);
+  writeNpyUint32(outputs.stage(prefix + "_counts.npy"), {map.size(), map.size(), map.bins()},
+                 map.counts());
 }
 
 void run(const HeightMapOptions& o) {
@@ -136,7 +145,14 @@ void run(const HeightMapOptions& o) {
   HeightMapParams params;
   params.resolution = o.resolution;
   params.map_size = static_cast<std::size_t>(o.map_size);
-  params.z_bins = o.z_bins;
+  params.z_bins = parseNumbers(o.z_bins, "--z-bins");
+  const auto cells =
+      static_cast<std::uint64_t>(o.map_size) * static_cast<std::uint64_t>(o.map_size);
+  // counts (4 bytes a bin) twice (the map and the .npy), five image bytes a cell twice (ours,
+  // VTK's)
+  checkMemory(cells, 8 * (params.z_bins.size() + 1) + 10,
+              "--map-size " + std::to_string(o.map_size) + " with " +
+                  std::to_string(params.z_bins.size() + 1) + " height bins");
   params.obstacle_threshold = static_cast<std::uint32_t>(o.obstacle_threshold);
   HeightMap map(params);  // checks sizes and bins before any file is read
 
@@ -167,7 +183,9 @@ void run(const HeightMapOptions& o) {
     map.addFrame(cloud, pose);
     seconds += secondsSince(t0);
   }
-  writeImages(map, o.out_prefix);
+  OutputSet outputs;
+  writeImages(map, o.out_prefix, outputs);
+  outputs.commit();
 
   const HeightMapStatistics& s = map.statistics();
   nlohmann::json j = {{"frames", s.frames},
@@ -207,8 +225,9 @@ void addHeightMapCommand(CLI::App& app) {
   sub->add_option("--camera-height", o->camera_height, "Camera height above the floor, metres")
       ->check(kFiniteNonNegative);
   sub->add_option("--pitch-deg", o->pitch_deg, "Camera pitch, degrees (positive: looking down)")
-      ->check(CLI::Range(-90.0, 90.0));
-  sub->add_option("--yaw-deg", o->yaw_deg, "Camera yaw, degrees")->check(CLI::Range(-360.0, 360.0));
+      ->check(kFinite & CLI::Range(-90.0, 90.0));
+  sub->add_option("--yaw-deg", o->yaw_deg, "Camera yaw, degrees")
+      ->check(kFinite & CLI::Range(-360.0, 360.0));
   sub->add_option("--pose-matrix", o->pose_matrix, "Camera-to-map 4x4, 16 numbers row-major");
   sub->add_option("--trajectory", o->trajectory,
                   "TUM trajectory (timestamp tx ty tz qx qy qz qw), one line per frame, in order");
@@ -221,8 +240,7 @@ void addHeightMapCommand(CLI::App& app) {
       ->required()
       ->check(kCount & kFinitePositive);
   sub->add_option("--z-bins", o->z_bins, "Height bin edges a,b[,...] (strictly increasing)")
-      ->required()
-      ->delimiter(',');
+      ->required();
   sub->add_option("--obstacle-threshold", o->obstacle_threshold,
                   "Middle-bin count that marks an obstacle")
       ->check(kCount)

@@ -12,6 +12,7 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/laser_scan.h"
+#include "metricmap/io/output_set.h"
 #include "metricmap/lines/split_and_merge.h"
 #include "png_drawing.h"
 #include "svg_drawing.h"
@@ -105,17 +106,19 @@ void runLines(const LinesOptions& o) {
     clouds.push_back(std::make_shared<pcl::PointCloud<pcl::PointXYZ>>(scanToCloud(log.scans[k])));
   }
   int step_no = 0;
+  OutputSet outputs;  // the drawings and the steps are committed together, after segmentation
   if (!o.steps.empty()) {
-    std::filesystem::create_directories(o.steps);
-    sam.setStepCallback([&](const std::string& what, const std::vector<LineSegment>& segs) {
-      std::ostringstream name;
-      name << o.steps << "/step_" << std::setw(4) << std::setfill('0') << ++step_no << "_" << what
-           << ".svg";
-      writeTextAtomic(name.str(),
-                      drawScanSvg(*clouds.front(), segs,
-                                  "step " + std::to_string(step_no) + ": " + what + ", " +
-                                      std::to_string(segs.size()) + " segments"));
-    });
+    const std::string steps_dir = outputs.stageDirectory(o.steps);
+    sam.setStepCallback(
+        [&, steps_dir](const std::string& what, const std::vector<LineSegment>& segs) {
+          std::ostringstream name;
+          name << steps_dir << "/step_" << std::setw(4) << std::setfill('0') << ++step_no << "_"
+               << what << ".svg";
+          writeTextAtomic(name.str(),
+                          drawScanSvg(*clouds.front(), segs,
+                                      "step " + std::to_string(step_no) + ": " + what + ", " +
+                                          std::to_string(segs.size()) + " segments"));
+        });
   }
 
   std::vector<std::vector<LineSegment>> results(clouds.size());
@@ -127,12 +130,14 @@ void runLines(const LinesOptions& o) {
     sam.segment(results[k], members);
     seconds += secondsSince(t0);
   }
-  if (!o.png.empty()) writeScanPng(o.png, *clouds.front(), results.front());
+  if (!o.png.empty()) writeScanPng(outputs.stage(o.png), *clouds.front(), results.front());
   if (!o.svg.empty()) {
-    writeTextAtomic(o.svg, drawScanSvg(*clouds.front(), results.front(),
-                                       o.file + " scan " + std::to_string(first) + ": " +
-                                           std::to_string(results.front().size()) + " segments"));
+    writeTextAtomic(outputs.stage(o.svg),
+                    drawScanSvg(*clouds.front(), results.front(),
+                                o.file + " scan " + std::to_string(first) + ": " +
+                                    std::to_string(results.front().size()) + " segments"));
   }
+  outputs.commit();
 
   if (o.format == "json") {
     nlohmann::json scans = nlohmann::json::array();
@@ -184,8 +189,11 @@ void addLinesCommand(CLI::App& app) {
       ->check(kCount)
       ->each(generic);
   sub->add_option("--count", f.count, "Ranges per scan")->check(kCount)->each(generic);
-  sub->add_option("--angle-min-deg", f.angle_min_deg, "Angle of beam 0")->each(generic);
+  sub->add_option("--angle-min-deg", f.angle_min_deg, "Angle of beam 0")
+      ->check(kFinite)
+      ->each(generic);
   sub->add_option("--angle-increment-deg", f.angle_increment_deg, "Angle between beams")
+      ->check(kFinite)
       ->each(generic);
   sub->add_option("--range-scale", f.range_scale, "Raw range x scale = metres")
       ->check(kFinitePositive)
@@ -193,7 +201,9 @@ void addLinesCommand(CLI::App& app) {
   sub->add_option("--min-range", f.min_range, "Smaller ranges (m) are invalid")
       ->check(kFiniteNonNegative)
       ->each(generic);
-  sub->add_option("--max-range", f.max_range, "Larger ranges (m) are invalid")->each(generic);
+  sub->add_option("--max-range", f.max_range, "Larger ranges (m) are invalid")
+      ->check(kFinite)
+      ->each(generic);
   auto* scan = sub->add_option("--scan", o->scan, "Scan to segment (0-based)")->check(kCount);
   sub->add_flag("--all", o->all, "Segment every scan")->excludes(scan);
   sub->add_option("--distance-threshold", o->distance, "d_th: split distance, metres")

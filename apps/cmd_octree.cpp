@@ -7,6 +7,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "metricmap/io/cloud_writer.h"
+#include "metricmap/io/output_set.h"
 #include "metricmap/octree/adaptive_octree.h"
 #include "stats_json.h"
 #include "table.h"
@@ -50,8 +51,10 @@ void runOctree(const OctreeOptions& o) {
   octree.filter(means);
   const double octree_s = secondsSince(t1);
 
-  if (!o.out.empty()) savePcdAtomic(o.out, means, parsePcdFormat(o.pcd_format));
-  if (!o.leaves.empty()) writeTextAtomic(o.leaves, leavesCsv(octree.getNodes()));
+  OutputSet outputs;
+  if (!o.out.empty()) savePcdAtomic(outputs.stage(o.out), means, parsePcdFormat(o.pcd_format));
+  if (!o.leaves.empty()) writeTextAtomic(outputs.stage(o.leaves), leavesCsv(octree.getNodes()));
+  outputs.commit();
 
   const OctreeStatistics& s = octree.getStatistics();
   if (o.format == "json") {

@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 #include "cli_common.h"
 #include "commands.h"
+#include "metricmap/common/memory_budget.h"
+#include "metricmap/common/parse_number.h"
 
 #include "metricmap/exceptions.h"
 #include "metricmap/grid/occupancy_grid.h"
@@ -82,13 +84,18 @@ std::vector<DrawnSegment> readSegments(const std::string& path, long long scan) 
 
 void run(const ViewOptions& o) {
   int width = 0, height = 0;
-  char x = 0;
-  std::istringstream ws(o.window_size);
-  if (!(ws >> width >> x >> height) || x != 'x' || width < 16 || height < 16 || width > 16384 ||
-      height > 16384) {
-    throw CLI::ValidationError("--window-size",
-                               "expected WxH between 16 and 16384, got '" + o.window_size + "'");
+  const std::size_t x = o.window_size.find('x');
+  try {
+    if (x == std::string::npos) throw std::invalid_argument("no 'x'");
+    width = static_cast<int>(parseInteger(o.window_size.substr(0, x), "width", 16, 16384));
+    height = static_cast<int>(parseInteger(o.window_size.substr(x + 1), "height", 16, 16384));
+  } catch (const std::invalid_argument&) {
+    throw CLI::ValidationError("--window-size", "expected WxH between 16 and 16384, got '" +
+                                                    quoteForMessage(o.window_size) + "'");
   }
+  // VTK keeps several full-size buffers (colour, depth, offscreen target, screenshot copy).
+  checkMemory(static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height), 32,
+              "--window-size " + o.window_size);
   if (o.color_by == "count" && !o.octree) {
     throw CLI::ValidationError("--color-by",
                                "count needs --octree (points take their leaf's count)");

@@ -1,4 +1,5 @@
 // metricmap: metric maps from range data. One binary, one subcommand per job.
+#include <cstdio>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -6,16 +7,33 @@
 #include <pcl/console/print.h>
 #include <CLI/CLI.hpp>
 
+#include <vtkObject.h>
+
+#include "cli_common.h"
 #include "commands.h"
+#include "metricmap/common/memory_budget.h"
 #include "metricmap/version.h"
 
 int main(int argc, char** argv) {
   // metricmap reports problems itself, one line each; PCL's own chatter would repeat them.
   pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+  vtkObject::GlobalWarningDisplayOff();  // VTK's coloured log lines would repeat our message
 
   CLI::App app{"metricmap " METRICMAP_VERSION " - metric maps from range data"};
   app.set_version_flag("--version", METRICMAP_VERSION);
   app.require_subcommand(1);
+  std::string max_memory;
+  app.add_option("--max-memory", max_memory,
+                 "Memory budget checked before large allocations, e.g. 2G, 512M (default: half "
+                 "of physical memory)");
+  app.parse_complete_callback([&max_memory] {
+    if (max_memory.empty()) return;
+    try {
+      metricmap::setMemoryBudget(metricmap::parseByteSize(max_memory, "--max-memory"));
+    } catch (const std::invalid_argument& e) {
+      throw CLI::ValidationError("--max-memory", e.what());
+    }
+  });
   metricmap::cli::addInfoCommand(app);
   metricmap::cli::addGridCommand(app);
   metricmap::cli::addOctreeCommand(app);
@@ -46,11 +64,19 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::cerr << "metricmap: usage: " << e.what() << " (see --help)\n";
     return 2;
+  } catch (const metricmap::cli::UsageError& e) {
+    std::cerr << "metricmap: usage: " << e.what() << " (see --help)\n";
+    return 2;
   } catch (const std::bad_alloc&) {
     std::cerr << "metricmap: error: out of memory\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "metricmap: error: " << e.what() << "\n";
+    return 1;
+  }
+  // A full disk or a closed pipe may only show when standard output is flushed.
+  if (std::fflush(stdout) != 0 || std::ferror(stdout) != 0) {
+    std::cerr << "metricmap: error: cannot write to standard output\n";
     return 1;
   }
   return 0;

@@ -6,3 +6,6 @@ find_package(yaml-cpp REQUIRED)
 if(METRICMAP_BUILD_APPS)
   find_package(CLI11 REQUIRED)
 endif()
+# Image decoders with error reporting (damaged or hostile depth/RGB images).
+find_package(PNG REQUIRED)
+find_package(TIFF REQUIRED)

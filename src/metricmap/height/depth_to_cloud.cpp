@@ -27,7 +27,8 @@ pcl::PointCloud<PointT> project(const DepthImage& depth, const CameraIntrinsics&
   bool dense = true;
   for (int v = 0; v < depth.height; ++v) {
     for (int u = 0; u < depth.width; ++u) {
-      PointT& p = cloud.at(u, v);
+      // Flat indexing: a one-row image is organized too (PCL's at(u, v) refuses height 1).
+      PointT& p = cloud[static_cast<std::size_t>(v) * depth.width + u];
       const std::uint16_t d = depth.at(u, v);
       fill(p, u, v);
       if (d == 0) {
@@ -39,6 +40,12 @@ pcl::PointCloud<PointT> project(const DepthImage& depth, const CameraIntrinsics&
       p.x = static_cast<float>((u - k.cx) * z / k.fx);
       p.y = static_cast<float>((v - k.cy) * z / k.fy);
       p.z = static_cast<float>(z);
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+        throw std::invalid_argument("depth scale " + std::to_string(depth_scale) +
+                                    " times raw depth " + std::to_string(d) + " at pixel (" +
+                                    std::to_string(u) + ", " + std::to_string(v) +
+                                    ") gives a coordinate beyond float range");
+      }
     }
   }
   cloud.is_dense = dense;

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
+#include <type_traits>
 
 #include <unistd.h>
 #include <vtkImageData.h>
@@ -11,10 +12,28 @@
 #include <vtkPNMWriter.h>
 
 #include "metricmap/io/cloud_writer.h"
+#include "metricmap/io/output_set.h"
 
 namespace metricmap {
 
 namespace {
+
+/// VTK's writers do not report a short write everywhere: the file must exist and end with
+/// a complete image (PNG: the IEND chunk; PNM: non-empty).
+bool wholeFileWritten(const std::string& tmp, bool png) {
+  std::FILE* f = std::fopen(tmp.c_str(), "rb");
+  if (f == nullptr) return false;
+  bool ok = std::fseek(f, 0, SEEK_END) == 0 && std::ftell(f) > 0;
+  if (ok && !png) {
+    std::fclose(f);
+    return true;
+  }
+  char tail[8] = {0};
+  ok = ok && std::fseek(f, -8, SEEK_END) == 0 && std::fread(tail, 1, 8, f) == 8 &&
+       std::memcmp(tail, "IEND", 4) == 0;
+  std::fclose(f);
+  return ok;
+}
 
 template <typename Writer>
 void writeImage(const std::string& path, int width, int height, int channels,
@@ -31,12 +50,15 @@ void writeImage(const std::string& path, int width, int height, int channels,
     std::memcpy(dst + static_cast<std::size_t>(height - 1 - v) * row_bytes,
                 pixels.data() + static_cast<std::size_t>(v) * row_bytes, row_bytes);
   }
+  checkOutputPath(path);
   const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
   vtkNew<Writer> writer;
   writer->SetFileName(tmp.c_str());
   writer->SetInputData(image);
   writer->Write();
-  if (writer->GetErrorCode() != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
+  if (writer->GetErrorCode() != 0 ||
+      !wholeFileWritten(tmp, std::is_same<Writer, vtkPNGWriter>::value) ||
+      std::rename(tmp.c_str(), path.c_str()) != 0) {
     std::remove(tmp.c_str());
     throw std::runtime_error(path + ": cannot write image");
   }

@@ -1,6 +1,8 @@
 #include "metricmap/io/camera_intrinsics.h"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -9,9 +11,48 @@
 #include <boost/property_tree/xml_parser.hpp>
 #include <nlohmann/json.hpp>
 
+#include "metricmap/common/parse_number.h"
 #include "metricmap/exceptions.h"
 
 namespace metricmap {
+namespace {
+
+constexpr int kMaxNesting = 32;
+constexpr std::size_t kMaxCameraFileBytes = 1 << 20;
+
+/// A camera file is small: refuse special files, more than 1 MiB and NUL bytes before parsing.
+std::string readSmallText(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError(path + ": cannot open (not a regular file)");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open");
+  std::string text(kMaxCameraFileBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxCameraFileBytes)
+    throw InputError(path + ": larger than 1 MiB, not a camera file");
+  if (text.find('\0') != std::string::npos)
+    throw InputError(path + ": holds NUL bytes, not a text file");
+  // boost's XML parser recurses once per element: bound the nesting before it runs.
+  int depth = 0, deepest = 0;
+  for (std::size_t i = 0; i + 1 < text.size(); ++i) {
+    if (text[i] == '<' && text[i + 1] != '/' && text[i + 1] != '?' && text[i + 1] != '!')
+      deepest = std::max(deepest, ++depth);
+    if (text[i] == '<' && text[i + 1] == '/') --depth;
+    if (text[i] == '/' && text[i + 1] == '>') --depth;
+  }
+  if (deepest > kMaxNesting) throw InputError(path + ": nested deeper than 32 levels");
+  return text;
+}
+
+std::string trimmed(const std::string& s) {
+  const std::size_t a = s.find_first_not_of(" \t\r\n");
+  if (a == std::string::npos) return std::string();
+  return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
+}
+
+}  // namespace
 
 void validateIntrinsics(const CameraIntrinsics& k) {
   if (!(std::isfinite(k.fx) && k.fx > 0 && std::isfinite(k.fy) && k.fy > 0 && std::isfinite(k.cx) &&
@@ -24,19 +65,16 @@ void validateIntrinsics(const CameraIntrinsics& k) {
 }
 
 CameraIntrinsics parseIntrinsics(const std::string& text) {
-  CameraIntrinsics k;
-  double* fields[4] = {&k.fx, &k.fy, &k.cx, &k.cy};
-  std::istringstream is(text);
-  std::string item;
-  int n = 0;
-  for (; std::getline(is, item, ','); ++n) {
-    char* end = nullptr;
-    if (n >= 4) break;
-    *fields[n] = std::strtod(item.c_str(), &end);
-    if (item.empty() || *end != '\0')
-      throw std::invalid_argument("intrinsics: '" + item + "' is not a number");
+  const std::vector<double> v = parseDoubleList(text, "intrinsics");
+  if (v.size() != 4) {
+    throw std::invalid_argument("intrinsics must be 4 numbers fx,fy,cx,cy, got " +
+                                std::to_string(v.size()) + " in '" + quoteForMessage(text) + "'");
   }
-  if (n != 4) throw std::invalid_argument("intrinsics must be fx,fy,cx,cy, got '" + text + "'");
+  CameraIntrinsics k;
+  k.fx = v[0];
+  k.fy = v[1];
+  k.cx = v[2];
+  k.cy = v[3];
   validateIntrinsics(k);
   return k;
 }
@@ -44,27 +82,41 @@ CameraIntrinsics parseIntrinsics(const std::string& text) {
 CameraIntrinsics readPclGrabberXml(const std::string& path) {
   boost::property_tree::ptree tree;
   try {
-    boost::property_tree::read_xml(path, tree);
+    std::istringstream text(readSmallText(path));
+    boost::property_tree::read_xml(text, tree);
     const boost::property_tree::ptree& d = tree.get_child("depth");
+    const auto number = [&](const char* key) {
+      return parseFiniteDouble(trimmed(d.get<std::string>(key)), key);
+    };
     CameraIntrinsics k;
-    k.fx = d.get<double>("focal_length_x");
-    k.fy = d.get<double>("focal_length_y");
-    k.cx = d.get<double>("principal_point_x");
-    k.cy = d.get<double>("principal_point_y");
-    k.depth_scale = d.get<double>("z_multiplication_factor", 0.0);
+    k.fx = number("focal_length_x");
+    k.fy = number("focal_length_y");
+    k.cx = number("principal_point_x");
+    k.cy = number("principal_point_y");
+    if (d.get_child_optional("z_multiplication_factor")) {
+      k.depth_scale = number("z_multiplication_factor");
+      if (!(k.depth_scale > 0.0)) {
+        throw std::invalid_argument("z_multiplication_factor must be > 0, got " +
+                                    std::to_string(k.depth_scale));
+      }
+    }
     validateIntrinsics(k);
     return k;
   } catch (const std::exception& e) {
     throw InputError(path + ": not a PCL grabber camera XML with a <depth> block (" +
-                     std::string(e.what()).substr(0, 80) + ")");
+                     quoteForMessage(std::string(e.what()).substr(0, 120)) + ")");
   }
 }
 
 CameraIntrinsics readOpen3dJson(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open");
+  const std::string text = readSmallText(path);
   try {
-    const nlohmann::json j = nlohmann::json::parse(in);
+    // Refuse deep nesting while parsing (nlohmann's parser and destructor recurse).
+    const nlohmann::json j =
+        nlohmann::json::parse(text, [](int depth, nlohmann::json::parse_event_t, nlohmann::json&) {
+          if (depth > kMaxNesting) throw std::invalid_argument("nested deeper than 32 levels");
+          return true;
+        });
     const auto& m = j.at("intrinsic_matrix");
     if (!m.is_array() || m.size() != 9)
       throw std::invalid_argument("intrinsic_matrix needs 9 numbers");
@@ -73,13 +125,23 @@ CameraIntrinsics readOpen3dJson(const std::string& path) {
     k.fy = m.at(4).get<double>();
     k.cx = m.at(6).get<double>();
     k.cy = m.at(7).get<double>();
-    k.width = j.value("width", 0);
-    k.height = j.value("height", 0);
+    for (int i : {0, 4, 6, 7}) {
+      if (!m.at(i).is_number()) throw std::invalid_argument("intrinsic_matrix holds a non-number");
+    }
+    const auto size = [&](const char* key) {
+      if (!j.contains(key)) return 0;
+      const auto& v = j.at(key);
+      if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > (1 << 20))
+        throw std::invalid_argument(std::string(key) + " must be an integer in [0, 1048576]");
+      return static_cast<int>(v.get<long long>());
+    };
+    k.width = size("width");
+    k.height = size("height");
     validateIntrinsics(k);
     return k;
   } catch (const std::exception& e) {
-    throw InputError(path + ": not an Open3D camera JSON (" + std::string(e.what()).substr(0, 80) +
-                     ")");
+    throw InputError(path + ": not an Open3D camera JSON (" +
+                     quoteForMessage(std::string(e.what()).substr(0, 120)) + ")");
   }
 }
 

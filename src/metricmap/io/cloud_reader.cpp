@@ -93,6 +93,11 @@ LoadReport loadCloud(const std::string& path, pcl::PointCloud<PointT>& cloud) {
   report.height = blob.height;
   report.points_in_file = static_cast<std::uint64_t>(blob.width) * blob.height;
   checkXyz(path, blob);
+  // pcl::fromPCLPointCloud2 indexes the first byte of the data even when there is none.
+  if (report.points_in_file == 0 || blob.data.empty())
+    throw InputError(path + ": no points (the file declares 0)");
+  if (blob.point_step == 0 || blob.data.size() / blob.point_step < report.points_in_file)
+    throw InputError(path + ": the point data is shorter than the declared point count");
   pcl::fromPCLPointCloud2(blob, cloud);
   dropNonFinite(cloud, report);
   if (cloud.empty()) {

@@ -10,6 +10,8 @@
 #include <pcl/exceptions.h>
 #include <pcl/io/pcd_io.h>
 
+#include "metricmap/io/output_set.h"
+
 namespace metricmap {
 namespace {
 
@@ -19,6 +21,12 @@ std::string temporaryName(const std::string& path) {
 }
 
 void commit(const std::string& tmp, const std::string& path) {
+  try {
+    checkOutputPath(path);
+  } catch (...) {
+    std::remove(tmp.c_str());
+    throw;
+  }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     std::remove(tmp.c_str());
     throw std::runtime_error(path + ": cannot write (rename failed)");
@@ -38,6 +46,7 @@ PcdFormat parsePcdFormat(const std::string& name) {
 template <typename PointT>
 void savePcdAtomic(const std::string& path, const pcl::PointCloud<PointT>& cloud,
                    PcdFormat format) {
+  checkOutputPath(path);
   const std::string tmp = temporaryName(path);
   pcl::PCDWriter writer;
   int rc = -1;
@@ -64,12 +73,13 @@ void savePcdAtomic(const std::string& path, const pcl::PointCloud<PointT>& cloud
 }
 
 void writeTextAtomic(const std::string& path, const std::string& text) {
+  checkOutputPath(path);
   const std::string tmp = temporaryName(path);
   {
     std::ofstream out(tmp, std::ios::binary);
     if (!out) throw std::runtime_error(path + ": cannot open for writing");
     out << text;
-    out.flush();
+    out.close();  // a full disk may only show at the final flush and close
     if (!out) {
       out.close();
       std::remove(tmp.c_str());

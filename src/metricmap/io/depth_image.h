@@ -1,6 +1,6 @@
 #pragma once
 /// \file depth_image.h
-/// \brief 16-bit depth images (PNG, TIFF) and 8-bit RGB images, read through VTK's readers.
+/// \brief 16-bit depth images (PNG, TIFF) and 8-bit RGB images, read with libpng and libtiff.
 
 #include <cstdint>
 #include <string>

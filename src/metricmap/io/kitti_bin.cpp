@@ -1,13 +1,18 @@
 #include "metricmap/io/kitti_bin.h"
 
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 
+#include "metricmap/common/memory_budget.h"
 #include "metricmap/exceptions.h"
 
 namespace metricmap {
 
 void readKittiBin(const std::string& path, pcl::PCLPointCloud2& blob) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw InputError(path + ": not a regular file (a directory or a special file)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open");
   in.seekg(0, std::ios::end);
@@ -19,6 +24,8 @@ void readKittiBin(const std::string& path, pcl::PCLPointCloud2& blob) {
   }
   const auto n = static_cast<std::uint64_t>(size) / 16;
   if (n > 0xFFFFFFFFull) throw InputError(path + ": too many points for one cloud");
+  if (size == 0) throw InputError(path + ": empty file, no points");
+  checkMemory(static_cast<std::uint64_t>(size), 2, path);  // the blob, then the cloud
   in.seekg(0);
   blob = pcl::PCLPointCloud2();
   const char* names[4] = {"x", "y", "z", "intensity"};

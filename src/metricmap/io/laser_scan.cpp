@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "metricmap/common/parse_number.h"
 #include "metricmap/exceptions.h"
 
 namespace metricmap {
@@ -20,11 +21,27 @@ std::ifstream openText(const std::string& path) {
   return in;
 }
 
+/// Every number in a log goes through the checked parser; a refused token makes the line malformed.
 bool parseDouble(const std::string& s, double& v) {
-  if (s.empty()) return false;
-  char* end = nullptr;
-  v = std::strtod(s.c_str(), &end);
-  return *end == '\0' && std::isfinite(v);
+  try {
+    v = parseFiniteDouble(s, "scan value");
+    return true;
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
+}
+
+/// A beam count: an integer in [1, available] (the tokens left on the line), never a cast of a
+/// double that may not fit.
+bool parseBeamCount(const std::string& s, std::size_t available, std::size_t& n) {
+  if (available == 0) return false;
+  try {
+    n = static_cast<std::size_t>(
+        parseInteger(s, "beam count", 1, static_cast<long long>(available)));
+    return true;
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
 }
 
 std::vector<std::string> tokens(const std::string& line) {
@@ -155,7 +172,7 @@ ScanLog readScanLines(const std::string& path, const ScanLineFormat& f) {
   validateScanLineFormat(f);
   return readEachLine(path, [&](const std::vector<std::string>& t, LaserScan& scan) {
     const bool ok =
-        t.size() >= f.skip_tokens + f.count &&
+        t.size() >= f.skip_tokens && t.size() - f.skip_tokens >= f.count &&
         fillRanges(t, f.skip_tokens, f.count, f.angle_min_deg * kDeg, f.angle_increment_deg * kDeg,
                    f.range_scale, f.min_range, f.max_range, scan);
     return ok ? LineKind::Scan : LineKind::Malformed;
@@ -173,12 +190,11 @@ bool looksLikeCarmen(const std::string& path) {
 
 ScanLog readCarmenLog(const std::string& path) {
   return readEachLine(path, [](const std::vector<std::string>& t, LaserScan& scan) {
-    double n_raw = 0.0;
+    std::size_t n = 0;
     bool ok = false;
     if (t[0] == "FLASER") {
-      ok = t.size() >= 2 && parseDouble(t[1], n_raw) && n_raw >= 1 && n_raw == std::floor(n_raw);
+      ok = t.size() >= 2 && parseBeamCount(t[1], t.size() - 2, n);
       if (ok) {
-        const auto n = static_cast<std::size_t>(n_raw);
         const double step = (n % 2 == 1 && n > 1) ? M_PI / static_cast<double>(n - 1)
                                                   : M_PI / static_cast<double>(n);
         ok = t.size() >= 2 + n && fillRanges(t, 2, n, -M_PI / 2, step, 1.0, 0.0,
@@ -187,10 +203,9 @@ ScanLog readCarmenLog(const std::string& path) {
     } else if (t[0] == "ROBOTLASER1") {
       double start = 0, fov = 0, res = 0, max_r = 0;
       ok = t.size() >= 9 && parseDouble(t[2], start) && parseDouble(t[3], fov) &&
-           parseDouble(t[4], res) && parseDouble(t[5], max_r) && parseDouble(t[8], n_raw) &&
-           n_raw >= 1 && n_raw == std::floor(n_raw) && res > 0.0;
+           parseDouble(t[4], res) && parseDouble(t[5], max_r) &&
+           parseBeamCount(t[8], t.size() - 9, n) && res > 0.0;
       if (ok) {
-        const auto n = static_cast<std::size_t>(n_raw);
         ok = t.size() >= 9 + n && fillRanges(t, 9, n, start, res, 1.0, 0.0,
                                              max_r > 0.0 ? max_r * (1 - 1e-9) : INFINITY, scan);
       }

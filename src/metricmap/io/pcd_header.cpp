@@ -160,6 +160,12 @@ void checkBinary(const std::string& path, std::istream& in, const PcdHeader& h,
                    " compressed bytes announced, " + std::to_string(body) + " present");
   }
   if (need > 0 && sizes[0] == 0) fail(path, "binary_compressed body is empty");
+  // An LZF token of at most 3 bytes unpacks to at most 264 bytes (ratio < 100).
+  if (need > 100 * static_cast<std::uint64_t>(sizes[0]) + 1024) {
+    fail(path, "binary_compressed body of " + std::to_string(sizes[0]) +
+                   " bytes cannot unpack to the " + std::to_string(need) +
+                   " bytes the header needs");
+  }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <pcl/io/pcd_io.h>
 
+#include "metricmap/common/memory_budget.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/pcd_header.h"
 
@@ -62,6 +63,8 @@ void layout(const std::string& path, const PcdHeader& h, pcl::PCLPointCloud2& bl
 void readPcd(const std::string& path, pcl::PCLPointCloud2& blob, LoadReport& report) {
   const PcdHeader h = checkPcdFile(path, report.skipped_lines);
   report.format = "pcd " + h.data;
+  // The body as PCL decodes it, then the cloud (up to 48 bytes a point).
+  checkMemory(h.points, h.point_bytes + 48, path + " (" + std::to_string(h.points) + " points)");
   layout(path, h, blob);
   if (h.points == 0) return;
   pcl::PCDReader reader;

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "metricmap/common/parse_number.h"
 #include "metricmap/exceptions.h"
 
 namespace metricmap {
@@ -30,15 +31,46 @@ void checkPlyFile(const std::string& path) {
       ended = true;
       break;
     }
+    if (line.find('\0') != std::string::npos)
+      throw InputError(path + ": NUL byte in the PLY header");
     if (key == "element") {
-      std::string name;
+      std::string name, count_text, extra;
+      is >> name >> count_text;
       long long count = -1;
-      is >> name >> count;
-      if (!is || count < 0) throw InputError(path + ": bad PLY element line '" + line + "'");
+      try {
+        count = parseInteger(count_text, "element count", 0, 1LL << 40);
+      } catch (const std::invalid_argument&) {
+      }
+      if (name.empty() || count < 0 || (is >> extra))
+        throw InputError(path + ": bad PLY element line '" + quoteForMessage(line) + "'");
       in_vertex = name == "vertex";
       if (in_vertex) vertices = static_cast<std::uint64_t>(count);
     } else if (key == "property" && in_vertex) {
+      std::string type, name;
+      is >> type >> name;
+      // PCL's PLY parser asserts on a list among the vertex properties; refuse it here.
+      if (type == "list")
+        throw InputError(path + ": PLY vertex element has a list property ('" +
+                         quoteForMessage(line) + "'); only scalar vertex properties are read");
+      static const char* const kScalar[] = {
+          "char", "uchar", "short", "ushort", "int",   "uint",   "float",   "double",
+          "int8", "uint8", "int16", "uint16", "int32", "uint32", "float32", "float64"};
+      bool known = false;
+      for (const char* t : kScalar) known = known || type == t;
+      if (!known || name.empty())
+        throw InputError(path + ": bad PLY property line '" + quoteForMessage(line) + "'");
       ++properties;
+    } else if (key == "obj_info") {
+      // PCL sizes an organized cloud from obj_info num_cols / num_rows: they must be sane.
+      std::string what, value;
+      is >> what >> value;
+      if (what == "num_cols" || what == "num_rows") {
+        try {
+          parseInteger(value, "obj_info " + what, 1, 1 << 20);
+        } catch (const std::invalid_argument& e) {
+          throw InputError(path + ": " + e.what());
+        }
+      }
     }
   }
   if (!ended) throw InputError(path + ": PLY header has no end_header");
