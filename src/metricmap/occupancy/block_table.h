@@ -88,6 +88,15 @@ struct ScanBlock {
 struct ScanUpdate {
   std::vector<ScanBlock> blocks;
   BlockHashIndex index;
+  /// Dense free/hit bits over the scan's bounding box, 16 words per block (kept zeroed).
+  std::vector<std::uint64_t> dense;
+  /// Beam ends of the scan: float end point, key, hit flag.
+  struct End {
+    float e[3];
+    std::int32_t k[3];
+    std::int32_t hit;
+  };
+  std::vector<End> ends;
   void clear() {
     blocks.clear();
     index.clear();
