@@ -3,6 +3,7 @@ find_package(PCL 1.12 REQUIRED COMPONENTS common io filters octree sample_consen
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(nlohmann_json 3.2 REQUIRED)
 find_package(yaml-cpp REQUIRED)
+find_package(octomap 1.9 REQUIRED)  # OctoMap .bt/.ot files (linked privately)
 if(METRICMAP_BUILD_APPS)
   find_package(CLI11 REQUIRED)
 endif()

@@ -1,0 +1,35 @@
+#include "metricmap/occupancy/log_odds_params.h"
+
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace metricmap {
+namespace {
+
+[[noreturn]] void bad(const std::string& name, double value, const std::string& rule) {
+  std::ostringstream msg;
+  msg << name << " must be " << rule << ", got " << value;
+  throw std::invalid_argument(msg.str());
+}
+
+void probability(const std::string& name, double p) {
+  if (!(p > 0.0 && p < 1.0)) bad(name, p, "a probability in (0, 1)");
+}
+
+}  // namespace
+
+void validateLogOddsParams(const LogOddsParams& p) {
+  if (!(std::isfinite(p.resolution) && p.resolution > 0.0))
+    bad("resolution", p.resolution, "finite and > 0");
+  probability("prob_hit", p.prob_hit);
+  probability("prob_miss", p.prob_miss);
+  probability("clamp_min", p.clamp_min);
+  probability("clamp_max", p.clamp_max);
+  probability("occupancy_threshold", p.occupancy_threshold);
+  if (p.clamp_min > p.clamp_max) bad("clamp_min", p.clamp_min, "<= clamp_max");
+  if (std::isnan(p.max_range) || !(p.max_range > 0.0))
+    bad("max_range", p.max_range, "> 0 (infinity: no cut)");
+}
+
+}  // namespace metricmap

@@ -1,0 +1,133 @@
+#include "metricmap/occupancy/octomap_io.h"
+
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include <octomap/AbstractOcTree.h>
+#include <octomap/OcTree.h>
+
+#include "metricmap/exceptions.h"
+#include "metricmap/io/cloud_writer.h"
+#include "metricmap/occupancy/octomap_file_check.h"
+
+namespace metricmap {
+namespace {
+
+constexpr std::int64_t kOctoMaxVal = 32768;  // OctoMap's key of coordinate 0 (16 levels)
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+  if (s.size() < suffix.size()) return false;
+  for (std::size_t i = 0; i < suffix.size(); ++i) {
+    if (std::tolower(static_cast<unsigned char>(s[s.size() - suffix.size() + i])) != suffix[i])
+      return false;
+  }
+  return true;
+}
+
+void useSensorModel(octomap::OcTree& tree, const LogOddsParams& p) {
+  tree.setProbHit(p.prob_hit);
+  tree.setProbMiss(p.prob_miss);
+  tree.setClampingThresMin(p.clamp_min);
+  tree.setClampingThresMax(p.clamp_max);
+  tree.setOccupancyThres(p.occupancy_threshold);
+}
+
+std::unique_ptr<octomap::OcTree> toOcTree(const LogOddsMap& map) {
+  VoxelKey lo, hi;
+  auto tree = std::make_unique<octomap::OcTree>(map.resolution());
+  useSensorModel(*tree, map.params());
+  if (!map.keyBounds(lo, hi)) return tree;
+  if (lo.x < -kOctoMaxVal || lo.y < -kOctoMaxVal || lo.z < -kOctoMaxVal || hi.x >= kOctoMaxVal ||
+      hi.y >= kOctoMaxVal || hi.z >= kOctoMaxVal) {
+    std::ostringstream msg;
+    msg << "the map spans voxels (" << lo.x << ", " << lo.y << ", " << lo.z << ") to (" << hi.x
+        << ", " << hi.y << ", " << hi.z << "); OctoMap files hold -32768..32767 per axis ("
+        << 32768 * map.resolution() << " m at this resolution)";
+    throw CapacityError(msg.str());
+  }
+  map.forEachKnown([&](const VoxelKey& k, float l) {
+    const octomap::OcTreeKey key(static_cast<octomap::key_type>(k.x + kOctoMaxVal),
+                                 static_cast<octomap::key_type>(k.y + kOctoMaxVal),
+                                 static_cast<octomap::key_type>(k.z + kOctoMaxVal));
+    tree->setNodeValue(key, l, /*lazy_eval=*/true);
+  });
+  tree->updateInnerOccupancy();
+  tree->prune();
+  return tree;
+}
+
+std::string readAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open");
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw InputError(path + ": read error");
+  return bytes;
+}
+
+}  // namespace
+
+void writeOctomap(const LogOddsMap& map, const std::string& path) {
+  const bool binary = endsWith(path, ".bt");
+  if (!binary && !endsWith(path, ".ot"))
+    throw std::invalid_argument(path + ": OctoMap files end in .bt or .ot");
+  std::unique_ptr<octomap::OcTree> tree = toOcTree(map);
+  std::ostringstream out(std::ios::binary);
+  const bool ok = binary ? tree->writeBinary(out) : tree->write(out);
+  if (!ok || !out) throw std::runtime_error(path + ": liboctomap could not serialise the map");
+  writeTextAtomic(path, out.str());
+}
+
+LogOddsMap readOctomap(const std::string& path, const LogOddsParams& params,
+                       std::size_t max_voxels) {
+  const std::string bytes = readAll(path);
+  const OctomapFileInfo info = checkOctomapBytes(bytes, path);
+  LogOddsParams p = params;
+  p.resolution = info.resolution;
+  LogOddsMap map(p);
+  if (info.size == 0) return map;
+
+  std::unique_ptr<octomap::OcTree> tree;
+  std::istringstream in(bytes, std::ios::binary);
+  if (info.binary) {
+    tree = std::make_unique<octomap::OcTree>(info.resolution);
+    useSensorModel(*tree, p);
+    if (!tree->readBinary(in)) throw InputError(path + ": liboctomap could not read the tree");
+  } else {
+    std::unique_ptr<octomap::AbstractOcTree> any(octomap::AbstractOcTree::read(in));
+    auto* oc = dynamic_cast<octomap::OcTree*>(any.get());
+    if (oc == nullptr) throw InputError(path + ": liboctomap could not read an OcTree");
+    any.release();
+    tree.reset(oc);
+  }
+  // expansion budget first: a leaf at depth d covers 8^(16 - d) voxels
+  std::size_t total = 0;
+  const unsigned max_depth = tree->getTreeDepth();
+  for (auto it = tree->begin_leafs(), end = tree->end_leafs(); it != end; ++it) {
+    const unsigned levels = max_depth - it.getDepth();
+    if (levels >= 10) throw CapacityError(path + ": a leaf covers more than 2^30 voxels");
+    total += std::size_t{1} << (3 * levels);
+    if (total > max_voxels) {
+      throw CapacityError(path + ": expanding the pruned leaves gives more than " +
+                          std::to_string(max_voxels) + " voxels");
+    }
+  }
+  for (auto it = tree->begin_leafs(), end = tree->end_leafs(); it != end; ++it) {
+    const octomap::OcTreeKey base = it.getIndexKey();
+    const std::int64_t edge = std::int64_t{1} << (max_depth - it.getDepth());
+    const float l = it->getLogOdds();
+    for (std::int64_t z = 0; z < edge; ++z) {
+      for (std::int64_t y = 0; y < edge; ++y) {
+        for (std::int64_t x = 0; x < edge; ++x) {
+          map.setLogOdds(
+              {base[0] + x - kOctoMaxVal, base[1] + y - kOctoMaxVal, base[2] + z - kOctoMaxVal}, l);
+        }
+      }
+    }
+  }
+  return map;
+}
+
+}  // namespace metricmap

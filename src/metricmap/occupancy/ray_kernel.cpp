@@ -1,0 +1,298 @@
+#include "metricmap/occupancy/ray_kernel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <sstream>
+
+#include <emmintrin.h>
+
+#include "metricmap/common/fast_floor.h"
+#include "metricmap/exceptions.h"
+#include "metricmap/occupancy/voxel_key.h"
+
+namespace metricmap::detail {
+
+void BlockHashIndex::clear() {
+  std::fill(keys_.begin(), keys_.end(), kEmpty);
+  size_ = 0;
+}
+
+void BlockHashIndex::grow() {
+  const std::size_t capacity = keys_.empty() ? 1024 : keys_.size() * 2;
+  std::vector<std::uint64_t> old_keys(capacity, kEmpty);
+  std::vector<std::uint32_t> old_values(capacity);
+  old_keys.swap(keys_);
+  old_values.swap(values_);
+  mask_ = capacity - 1;
+  shift_ = 64 - __builtin_ctzll(capacity);
+  size_ = 0;
+  for (std::size_t i = 0; i < old_keys.size(); ++i) {
+    if (old_keys[i] == kEmpty) continue;
+    std::size_t s = slot(old_keys[i]);
+    while (keys_[s] != kEmpty) s = (s + 1) & mask_;
+    keys_[s] = old_keys[i];
+    values_[s] = old_values[i];
+    ++size_;
+  }
+}
+
+namespace {
+
+/// Marks voxels into the scan's blocks; remembers the last block touched.
+class Marker {
+ public:
+  explicit Marker(ScanUpdate& out) : out_(out) {}
+
+  std::uint64_t* freeWords(std::int64_t bx, std::int64_t by, std::int64_t bz) {
+    if (bx != bx_ || by != by_ || bz != bz_) select(bx, by, bz);
+    return block_->free;
+  }
+  void markFree(std::int64_t x, std::int64_t y, std::int64_t z) {
+    std::uint64_t* w = freeWords(x >> kBlockShift, y >> kBlockShift, z >> kBlockShift);
+    const int i = voxelInBlock(x, y, z);
+    w[i >> 6] |= std::uint64_t{1} << (i & 63);
+  }
+  void markHit(std::int64_t x, std::int64_t y, std::int64_t z) {
+    freeWords(x >> kBlockShift, y >> kBlockShift, z >> kBlockShift);
+    const int i = voxelInBlock(x, y, z);
+    block_->hit[i >> 6] |= std::uint64_t{1} << (i & 63);
+  }
+
+ private:
+  void select(std::int64_t bx, std::int64_t by, std::int64_t bz) {
+    const std::uint64_t key = packVoxelKey(bx, by, bz);
+    bool inserted = false;
+    const auto next = static_cast<std::uint32_t>(out_.blocks.size());
+    const std::uint32_t index = out_.index.findOrInsert(key, next, inserted);
+    if (inserted) {
+      out_.blocks.emplace_back();
+      ScanBlock& b = out_.blocks.back();
+      std::memset(b.free, 0, sizeof(b.free));
+      std::memset(b.hit, 0, sizeof(b.hit));
+      b.key = key;
+    }
+    block_ = &out_.blocks[index];
+    bx_ = bx;
+    by_ = by;
+    bz_ = bz;
+  }
+
+  ScanUpdate& out_;
+  ScanBlock* block_ = nullptr;
+  std::int64_t bx_ = std::numeric_limits<std::int64_t>::min(), by_ = 0, bz_ = 0;
+};
+
+struct Key3 {
+  std::int64_t v[3];
+};
+
+[[noreturn]] void outsideKeySpace(const float p[3], double resolution) {
+  std::ostringstream msg;
+  msg << "point (" << p[0] << ", " << p[1] << ", " << p[2] << ") is outside the voxel key space ("
+      << "+-" << static_cast<double>(kVoxelKeyLimit) * resolution << " m at resolution "
+      << resolution << " m)";
+  throw CapacityError(msg.str());
+}
+
+/// OctoMap's coordToKey: floor(coordinate * (1 / resolution)) in double.
+bool keyOf(const float p[3], double inv_res, Key3& key) {
+  for (int i = 0; i < 3; ++i) {
+    const double s = inv_res * static_cast<double>(p[i]);
+    if (!(s >= -static_cast<double>(kVoxelKeyLimit) && s < static_cast<double>(kVoxelKeyLimit)))
+      return false;
+    key.v[i] = floorToInt(s);
+  }
+  return true;
+}
+
+/// Marks into dense per-block bits over the scan's bounding box (block-aligned origin).
+class DenseMarker {
+ public:
+  DenseMarker(std::uint64_t* words, const std::int64_t lo[3], std::int64_t nbx, std::int64_t nby)
+      : words_(words), x0_(lo[0]), y0_(lo[1]), z0_(lo[2]), nbx_(nbx), nby_(nby) {}
+  void markFree(std::int64_t x, std::int64_t y, std::int64_t z) { set(x, y, z, 0); }
+  void markHit(std::int64_t x, std::int64_t y, std::int64_t z) { set(x, y, z, kBlockWords); }
+
+ private:
+  void set(std::int64_t x, std::int64_t y, std::int64_t z, int offset) {
+    const std::int64_t lx = x - x0_, ly = y - y0_, lz = z - z0_;
+    const std::int64_t b =
+        ((lz >> kBlockShift) * nby_ + (ly >> kBlockShift)) * nbx_ + (lx >> kBlockShift);
+    const int i = voxelInBlock(lx, ly, lz);
+    words_[b * 2 * kBlockWords + offset + (i >> 6)] |= std::uint64_t{1} << (i & 63);
+  }
+  std::uint64_t* words_;
+  std::int64_t x0_, y0_, z0_, nbx_, nby_;
+};
+
+/// One beam being walked: OctoMap's computeRayKeys state (Amanatides & Woo in double from
+/// float coordinates). The crossing parameters live in SSE2 registers (low lane) so a step
+/// needs no branch.
+struct Beam {
+  __m128d t[3], dt[3], length;
+  std::int64_t k[3], step[3];
+  std::int32_t ke[3];
+};
+
+/// OctoMap's initialisation of computeRayKeys for origin o, end e (keys differ).
+void startBeam(const float o[3], const float e[3], const Key3& ko, const std::int32_t ke[3],
+               double res, Beam& b) {
+  float dir[3] = {e[0] - o[0], e[1] - o[1], e[2] - o[2]};
+  const float length = static_cast<float>(
+      std::sqrt(static_cast<double>(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2])));
+  dir[0] /= length;
+  dir[1] /= length;
+  dir[2] /= length;
+  for (int i = 0; i < 3; ++i) {
+    b.k[i] = ko.v[i];
+    b.ke[i] = ke[i];
+    b.step[i] = dir[i] > 0.0f ? 1 : (dir[i] < 0.0f ? -1 : 0);
+    double t_max = std::numeric_limits<double>::max();
+    double t_delta = std::numeric_limits<double>::max();
+    if (b.step[i] != 0) {
+      double border = (static_cast<double>(ko.v[i]) + 0.5) * res;
+      border += static_cast<float>(static_cast<double>(b.step[i]) * res * 0.5);
+      t_max = (border - static_cast<double>(o[i])) / static_cast<double>(dir[i]);
+      t_delta = res / static_cast<double>(std::fabs(dir[i]));
+    }
+    b.t[i] = _mm_set_sd(t_max);
+    b.dt[i] = _mm_set_sd(t_delta);
+  }
+  b.length = _mm_set_sd(static_cast<double>(length));
+}
+
+inline std::int64_t maskBits(__m128d m) { return _mm_cvtsi128_si64(_mm_castpd_si128(m)); }
+
+/// Walks one beam to its end, the state in locals (registers).
+template <typename Sink>
+inline void walkBeam(Beam b, Sink& sink) {
+  __m128d tx = b.t[0], ty = b.t[1], tz = b.t[2];
+  const __m128d dx = b.dt[0], dy = b.dt[1], dz = b.dt[2], len = b.length;
+  std::int64_t kx = b.k[0], ky = b.k[1], kz = b.k[2];
+  const std::int64_t sx = b.step[0], sy = b.step[1], sz = b.step[2];
+  const std::int64_t ex = b.ke[0], ey = b.ke[1], ez = b.ke[2];
+  const __m128d ones = _mm_castsi128_pd(_mm_set1_epi64x(-1));
+  for (;;) {
+    // OctoMap's choice, ties included: x if tx < ty and tx < tz, else y if ty < tz, else z
+    const __m128d x_lt_y = _mm_cmplt_sd(tx, ty);
+    const __m128d mx = _mm_and_pd(x_lt_y, _mm_cmplt_sd(tx, tz));
+    const __m128d my = _mm_andnot_pd(x_lt_y, _mm_cmplt_sd(ty, tz));
+    const __m128d mz = _mm_andnot_pd(_mm_or_pd(mx, my), ones);
+    tx = _mm_add_sd(tx, _mm_and_pd(mx, dx));
+    ty = _mm_add_sd(ty, _mm_and_pd(my, dy));
+    tz = _mm_add_sd(tz, _mm_and_pd(mz, dz));
+    kx += sx & maskBits(mx);
+    ky += sy & maskBits(my);
+    kz += sz & maskBits(mz);
+    if (((kx ^ ex) | (ky ^ ey) | (kz ^ ez)) == 0) return;
+    // OctoMap's guard against accumulated rounding: the next crossing lies beyond the end
+    if (_mm_comigt_sd(_mm_min_sd(_mm_min_sd(tx, ty), tz), len)) return;
+    sink.markFree(kx, ky, kz);
+  }
+}
+
+/// Walks every beam of the scan, marking the voxels from the origin's up to, not including,
+/// the end's as free and the end voxels of unclipped beams as hits.
+template <typename Sink>
+void walkAll(const float o[3], const Key3& ko, const ScanUpdate& up, double res, Sink& sink) {
+  Beam b;
+  for (const ScanUpdate::End& end : up.ends) {
+    if (end.hit) sink.markHit(end.k[0], end.k[1], end.k[2]);
+    if (ko.v[0] == end.k[0] && ko.v[1] == end.k[1] && ko.v[2] == end.k[2]) continue;
+    sink.markFree(ko.v[0], ko.v[1], ko.v[2]);
+    startBeam(o, end.e, ko, end.k, res, b);
+    walkBeam(b, sink);
+  }
+}
+
+constexpr std::int64_t kDenseBlockLimit = std::int64_t{1} << 20;  // 128 MiB of bits
+
+}  // namespace
+
+RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
+  out.clear();
+  out.ends.clear();
+  RayCastCounts counts;
+  const double res = in.resolution;
+  const double inv_res = 1.0 / res;
+  const float* o = in.origin;
+  Key3 ko;
+  if (!keyOf(o, inv_res, ko)) outsideKeySpace(o, res);
+  const bool cut_enabled = std::isfinite(in.max_range);
+  const auto max_range_f = static_cast<float>(in.max_range);
+  std::int64_t lo[3] = {ko.v[0], ko.v[1], ko.v[2]}, hi[3] = {ko.v[0], ko.v[1], ko.v[2]};
+  out.ends.reserve(in.count);
+  const auto* bytes = reinterpret_cast<const unsigned char*>(in.xyz);
+  for (std::size_t n = 0; n < in.count; ++n) {
+    const auto* src = reinterpret_cast<const float*>(bytes + n * in.stride_bytes);
+    float p[3] = {src[0], src[1], src[2]};
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+      ++counts.non_finite;
+      continue;
+    }
+    if (in.pose != nullptr) {
+      const float* m = in.pose;
+      const float x = p[0], y = p[1], z = p[2];
+      p[0] = m[0] * x + m[1] * y + m[2] * z + m[3];
+      p[1] = m[4] * x + m[5] * y + m[6] * z + m[7];
+      p[2] = m[8] * x + m[9] * y + m[10] * z + m[11];
+    }
+    ++counts.beams;
+    // OctoMap's test: the float difference, its squared norm in float, sqrt in double.
+    const float d[3] = {p[0] - o[0], p[1] - o[1], p[2] - o[2]};
+    const double norm = std::sqrt(static_cast<double>(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+    ScanUpdate::End end;
+    if (!cut_enabled || norm <= in.max_range) {
+      end.hit = 1;
+      for (int i = 0; i < 3; ++i) end.e[i] = p[i];
+    } else {
+      ++counts.cut;
+      end.hit = 0;
+      const auto f = static_cast<float>(norm);
+      for (int i = 0; i < 3; ++i) end.e[i] = o[i] + (d[i] / f) * max_range_f;
+    }
+    Key3 ke;
+    if (!keyOf(end.e, inv_res, ke)) outsideKeySpace(end.e, res);
+    for (int i = 0; i < 3; ++i) {
+      end.k[i] = static_cast<std::int32_t>(ke.v[i]);
+      lo[i] = std::min(lo[i], ke.v[i]);
+      hi[i] = std::max(hi[i], ke.v[i]);
+    }
+    out.ends.push_back(end);
+  }
+  std::int64_t nb[3];
+  for (int i = 0; i < 3; ++i) {
+    lo[i] = (lo[i] >> kBlockShift) << kBlockShift;
+    nb[i] = ((hi[i] - lo[i]) >> kBlockShift) + 1;
+  }
+  const std::int64_t dense_blocks = nb[0] * nb[1] * nb[2];
+  if (dense_blocks <= kDenseBlockLimit) {
+    const auto words = static_cast<std::size_t>(dense_blocks) * 2 * kBlockWords;
+    if (out.dense.size() < words) out.dense.assign(words, 0);
+    DenseMarker marker(out.dense.data(), lo, nb[0], nb[1]);
+    walkAll(o, ko, out, res, marker);
+    // harvest the touched blocks, zeroing the dense bits for the next scan
+    std::uint64_t* w = out.dense.data();
+    for (std::int64_t b = 0; b < dense_blocks; ++b, w += 2 * kBlockWords) {
+      std::uint64_t any = 0;
+      for (int j = 0; j < 2 * kBlockWords; ++j) any |= w[j];
+      if (any == 0) continue;
+      const std::int64_t bx = b % nb[0], by = (b / nb[0]) % nb[1], bz = b / (nb[0] * nb[1]);
+      out.blocks.emplace_back();
+      ScanBlock& sb = out.blocks.back();
+      std::memcpy(sb.free, w, sizeof(sb.free));
+      std::memcpy(sb.hit, w + kBlockWords, sizeof(sb.hit));
+      sb.key = packVoxelKey((lo[0] >> kBlockShift) + bx, (lo[1] >> kBlockShift) + by,
+                            (lo[2] >> kBlockShift) + bz);
+      std::memset(w, 0, 2 * kBlockWords * sizeof(std::uint64_t));
+    }
+  } else {
+    Marker marker(out);
+    walkAll(o, ko, out, res, marker);
+  }
+  return counts;
+}
+
+}  // namespace metricmap::detail
