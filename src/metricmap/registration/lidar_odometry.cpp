@@ -1,0 +1,177 @@
+#include "metricmap/registration/lidar_odometry.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "metricmap/exceptions.h"
+#include "metricmap/registration/deskew.h"
+#include "metricmap/registration/point_to_point_icp.h"
+#include "metricmap/registration/voxel_downsample.h"
+
+namespace metricmap {
+namespace {
+
+const LidarOdometryConfig& validated(const LidarOdometryConfig& c) {
+  auto positive = [](double v, const char* name) {
+    if (!(std::isfinite(v) && v > 0.0)) {
+      throw std::invalid_argument(std::string(name) + " must be a finite number > 0, got " +
+                                  std::to_string(v));
+    }
+  };
+  positive(c.max_range, "max_range");
+  positive(c.voxel_size, "voxel_size");
+  positive(c.initial_threshold, "initial_threshold");
+  positive(c.convergence, "convergence");
+  if (!(std::isfinite(c.min_range) && c.min_range >= 0.0 && c.min_range < c.max_range)) {
+    throw std::invalid_argument("min_range must be >= 0 and below max_range, got " +
+                                std::to_string(c.min_range));
+  }
+  for (auto [v, name] :
+       {std::pair{c.min_threshold, "min_threshold"}, std::pair{c.min_deviation, "min_deviation"},
+        std::pair{c.degeneracy_ratio, "degeneracy_ratio"},
+        std::pair{c.min_inlier_fraction, "min_inlier_fraction"}}) {
+    if (!(std::isfinite(v) && v >= 0.0)) {
+      throw std::invalid_argument(std::string(name) + " must be a finite number >= 0, got " +
+                                  std::to_string(v));
+    }
+  }
+  if (c.max_iterations < 1) {
+    throw std::invalid_argument("max_iterations must be >= 1, got " +
+                                std::to_string(c.max_iterations));
+  }
+  return c;
+}
+
+PointToPointIcpParams icpParams(const LidarOdometryConfig& c, double threshold) {
+  PointToPointIcpParams p;
+  p.threshold = threshold;
+  p.max_iterations = c.max_iterations;
+  p.convergence = c.convergence;
+  p.degeneracy_ratio = c.degeneracy_ratio;
+  return p;
+}
+
+}  // namespace
+
+LidarOdometry::LidarOdometry(const LidarOdometryConfig& config)
+    : config_(validated(config)),
+      map_(config.voxel_size, config.max_points_per_voxel),
+      threshold_(config.initial_threshold, config.min_threshold, config.min_deviation,
+                 config.max_range) {}
+
+void LidarOdometry::reset() {
+  map_.clear();
+  threshold_ = AdaptiveThreshold(config_.initial_threshold, config_.min_threshold,
+                                 config_.min_deviation, config_.max_range);
+  poses_.clear();
+}
+
+std::vector<Eigen::Vector3d> toPoints3d(const pcl::PointCloud<pcl::PointXYZ>& scan) {
+  std::vector<Eigen::Vector3d> out(scan.size());
+  for (std::size_t i = 0; i < scan.size(); ++i) out[i] = scan[i].getVector3fMap().cast<double>();
+  return out;
+}
+
+OdometryResult LidarOdometry::registerFrame(const pcl::PointCloud<pcl::PointXYZ>& scan,
+                                            const std::vector<double>& times,
+                                            const std::string& name) {
+  return registerFrame(toPoints3d(scan), times, name);
+}
+
+OdometryResult LidarOdometry::registerFrame(const std::vector<Eigen::Vector3d>& points,
+                                            const std::vector<double>& times,
+                                            const std::string& name) {
+  const std::string label = name.empty() ? "frame " + std::to_string(poses_.size()) : name;
+  const bool deskew = config_.deskew && poses_.size() >= 2;
+  if (config_.deskew && times.size() != points.size()) {
+    throw std::invalid_argument(label + ": deskew needs one time per point, got " +
+                                std::to_string(times.size()) + " for " +
+                                std::to_string(points.size()) + " points");
+  }
+  OdometryResult res;
+  res.points_in = points.size();
+  if (points.empty()) throw InputError(label + ": empty scan (no points)");
+
+  // Range window; the times follow their points.
+  std::vector<Eigen::Vector3d> kept;
+  std::vector<double> kept_times;
+  kept.reserve(points.size());
+  std::size_t finite = 0;
+  const double r_min2 = config_.min_range * config_.min_range;
+  const double r_max2 = config_.max_range * config_.max_range;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d& p = points[i];
+    if (!p.allFinite()) continue;
+    ++finite;
+    const double r2 = p.squaredNorm();
+    if (r2 < r_min2 || r2 > r_max2) continue;
+    kept.push_back(p);
+    if (deskew) kept_times.push_back(times[i]);
+  }
+  if (finite == 0) {
+    throw InputError(label + ": no finite point among " + std::to_string(points.size()));
+  }
+  if (kept.empty()) {
+    throw InputError(label + ": no point between min_range " + std::to_string(config_.min_range) +
+                     " and max_range " + std::to_string(config_.max_range) + " m");
+  }
+  res.points_used = kept.size();
+
+  // Motion of the last frame: the constant-velocity model for the prediction and the deskew.
+  Eigen::Isometry3d velocity = Eigen::Isometry3d::Identity();
+  if (poses_.size() >= 2) {
+    velocity.matrix() = poses_[poses_.size() - 2].matrix().inverse() * poses_.back().matrix();
+  }
+  std::vector<int> first_idx;
+  std::vector<Eigen::Vector3d> frame =
+      voxelDownsample(kept, 0.5 * config_.voxel_size, deskew ? &first_idx : nullptr);
+  if (deskew) {
+    std::vector<double> t(first_idx.size());
+    for (std::size_t i = 0; i < first_idx.size(); ++i) t[i] = kept_times[first_idx[i]];
+    frame = deskewScan(frame, t, velocity);
+  }
+  const std::vector<Eigen::Vector3d> source = voxelDownsample(frame, 1.5 * config_.voxel_size);
+  res.points_source = source.size();
+
+  if (poses_.empty()) {  // the first scan defines the world
+    res.pose = res.prediction = Eigen::Isometry3d::Identity();
+  } else {
+    const Eigen::Isometry3d& last = poses_.back();
+    res.prediction = last * velocity;
+    res.threshold = threshold_.threshold();
+    PointToPointIcpResult icp =
+        alignPointToPoint(source, map_, res.prediction, icpParams(config_, res.threshold));
+    const double need = config_.min_inlier_fraction * static_cast<double>(source.size());
+    if (static_cast<double>(icp.correspondences) < need && poses_.size() >= 2) {
+      // The prediction is off by more than the threshold (an abrupt stop, a reversal, a
+      // jolt): start again from the last pose with the initial, wide threshold.
+      const double wide = std::max(3.0 * config_.initial_threshold, res.threshold);
+      PointToPointIcpResult again = alignPointToPoint(source, map_, last, icpParams(config_, wide));
+      // Compare both at the same (narrow) threshold.
+      const PointToPointIcpResult check =
+          alignPointToPoint(source, map_, again.pose, icpParams(config_, res.threshold));
+      if (check.correspondences > icp.correspondences) {
+        icp = check;
+        icp.iterations += again.iterations;
+        res.restarted = true;
+      }
+    }
+    res.pose = icp.pose;
+    res.correspondences = icp.correspondences;
+    res.iterations = icp.iterations;
+    res.degenerate_directions = icp.degenerate_directions;
+    Eigen::Isometry3d deviation;
+    deviation.matrix() = res.prediction.matrix().inverse() * res.pose.matrix();
+    threshold_.update(deviation);
+  }
+  // Keep the rotation orthonormal over long runs.
+  res.pose.linear() = Eigen::Quaterniond(res.pose.linear()).normalized().toRotationMatrix();
+  poses_.push_back(res.pose);
+
+  for (Eigen::Vector3d& p : frame) p = res.pose * p;
+  map_.add(frame);
+  map_.removeFar(res.pose.translation(), config_.max_range);
+  return res;
+}
+
+}  // namespace metricmap

@@ -1,0 +1,76 @@
+#pragma once
+/// \file lidar_odometry.h
+/// \brief LiDAR odometry from the scans alone: robust point-to-point ICP of each scan against a
+/// voxel-hashed local map, constant-velocity prediction, adaptive correspondence threshold,
+/// double downsampling and optional deskew (the method of KISS-ICP, Vizzo et al., RA-L 2023).
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <Eigen/Geometry>
+
+#include "metricmap/registration/adaptive_threshold.h"
+#include "metricmap/registration/lidar_odometry_config.h"
+#include "metricmap/registration/voxel_hash_map.h"
+
+namespace metricmap {
+
+/// \brief What registering one scan gave.
+struct OdometryResult {
+  /// \brief Sensor pose in the frame of the first scan (sensor -> first sensor).
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  /// \brief Where the constant-velocity model put it.
+  Eigen::Isometry3d prediction = Eigen::Isometry3d::Identity();
+  std::size_t points_in = 0;        ///< points given
+  std::size_t points_used = 0;      ///< finite and within [min_range, max_range]
+  std::size_t points_source = 0;    ///< after the second downsampling: the ICP's source
+  std::size_t correspondences = 0;  ///< source points with a map point within the threshold
+  int iterations = 0;               ///< Gauss-Newton steps
+  double threshold = 0.0;           ///< correspondence threshold used (m)
+  int degenerate_directions = 0;    ///< directions held at the prediction (0: none)
+  bool restarted =
+      false;  ///< registered again from zero motion (the prediction found too few pairs)
+};
+
+/// \brief Scans in, poses out. Give the scans in acquisition order, each in its sensor frame;
+/// the first scan's sensor frame is the world. Not thread-safe; one object per sequence.
+class LidarOdometry {
+ public:
+  /// \throws std::invalid_argument naming a parameter out of its range
+  explicit LidarOdometry(const LidarOdometryConfig& config = LidarOdometryConfig());
+
+  /// \brief Register the next scan and return its pose.
+  /// \param points the scan, sensor frame; NaN/Inf points are skipped
+  /// \param times per-point sweep times in [0, 1] (fractions of the frame period), used by
+  /// deskew; empty when the sensor gives none
+  /// \param name how errors name this scan (default: "frame N", N counted from 0)
+  /// \throws InputError naming the scan when it is empty, has no finite point or none in range
+  /// \throws std::invalid_argument when deskew is on and `times` does not match `points`
+  OdometryResult registerFrame(const std::vector<Eigen::Vector3d>& points,
+                               const std::vector<double>& times = {}, const std::string& name = {});
+  /// \brief The same for a PCL cloud (converted once to double vectors).
+  OdometryResult registerFrame(const pcl::PointCloud<pcl::PointXYZ>& scan,
+                               const std::vector<double>& times = {}, const std::string& name = {});
+
+  /// \brief Poses of every scan registered so far (sensor -> first sensor).
+  const std::vector<Eigen::Isometry3d>& poses() const { return poses_; }
+  /// \brief The local map (world = the first scan's sensor frame).
+  const VoxelHashMap& localMap() const { return map_; }
+  const LidarOdometryConfig& config() const { return config_; }
+  /// \brief Forget every scan: the next one becomes the world again.
+  void reset();
+
+ private:
+  LidarOdometryConfig config_;
+  VoxelHashMap map_;
+  AdaptiveThreshold threshold_;
+  std::vector<Eigen::Isometry3d> poses_;
+};
+
+/// \brief The scan's points as double vectors (no filtering).
+std::vector<Eigen::Vector3d> toPoints3d(const pcl::PointCloud<pcl::PointXYZ>& scan);
+
+}  // namespace metricmap

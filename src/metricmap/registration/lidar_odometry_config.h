@@ -1,0 +1,44 @@
+#pragma once
+/// \file lidar_odometry_config.h
+/// \brief Parameters of LidarOdometry (KISS-ICP-like scan-to-map odometry), with their defaults.
+
+namespace metricmap {
+
+/// \brief Parameters of LidarOdometry. Distances in metres.
+struct LidarOdometryConfig {
+  /// \brief Returns farther than this are dropped; also the radius of the local map around the
+  /// sensor and the lever arm that turns a rotation error into metres for the threshold.
+  double max_range = 100.0;
+  /// \brief Returns closer than this are dropped (the vehicle itself).
+  double min_range = 3.0;
+  /// \brief Cell of the local map. Scans enter the map downsampled at half of it, and register
+  /// with a second downsampling at 1.5 times it.
+  double voxel_size = 1.0;
+  /// \brief Points kept per map cell; later points falling in a full cell are discarded.
+  int max_points_per_voxel = 20;
+  /// \brief Standard deviation (m) of the prediction error assumed until motion has been seen;
+  /// the correspondence threshold is three standard deviations.
+  double initial_threshold = 2.0;
+  /// \brief Lower bound of the correspondence threshold (m), so that a run of near-perfect
+  /// predictions cannot shrink it below what the next abrupt change of speed needs.
+  double min_threshold = 0.3;
+  /// \brief Smallest prediction error (m) a frame records in the threshold statistics: a
+  /// standing vehicle's near-zero errors then narrow the threshold to 3 times this, no further.
+  double min_deviation = 0.1;
+  /// \brief Gauss-Newton iterations per scan, at most.
+  int max_iterations = 500;
+  /// \brief Stop when the update's norm (translation m + rotation rad) is below this.
+  double convergence = 1e-4;
+  /// \brief A direction of the 6-DoF problem whose curvature is below this fraction of the
+  /// largest is degenerate (a corridor, a tunnel): the update leaves it at the prediction.
+  double degeneracy_ratio = 1e-3;
+  /// \brief When fewer than this fraction of the scan's points find a map point near the
+  /// constant-velocity prediction, the scan is registered again from the last pose (zero
+  /// motion) with the initial threshold, and the better of the two kept.
+  double min_inlier_fraction = 0.3;
+  /// \brief Correct the motion within a sweep using per-point times and the constant-velocity
+  /// model (needs the times).
+  bool deskew = false;
+};
+
+}  // namespace metricmap

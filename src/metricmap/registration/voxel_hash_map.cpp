@@ -1,0 +1,82 @@
+#include "metricmap/registration/voxel_hash_map.h"
+
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace metricmap {
+
+VoxelHashMap::VoxelHashMap(double voxel, int max_points)
+    : voxel_(voxel), inv_voxel_(1.0 / voxel), max_points_(max_points) {
+  if (!(std::isfinite(voxel) && voxel > 0.0)) {
+    throw std::invalid_argument("map voxel size must be a finite number > 0, got " +
+                                std::to_string(voxel));
+  }
+  if (max_points < 1) {
+    throw std::invalid_argument("points per voxel must be >= 1, got " + std::to_string(max_points));
+  }
+}
+
+void VoxelHashMap::add(const std::vector<Eigen::Vector3d>& points) {
+  for (const Eigen::Vector3d& p : points) {
+    const Eigen::Array3i c = voxelOf(p, inv_voxel_);
+    auto& cell = map_[packVoxel(c.x(), c.y(), c.z())];
+    if (cell.size() >= static_cast<std::size_t>(max_points_)) continue;
+    if (cell.empty()) cell.reserve(static_cast<std::size_t>(max_points_));
+    cell.push_back(p);
+    ++points_;
+  }
+}
+
+void VoxelHashMap::removeFar(const Eigen::Vector3d& origin, double radius) {
+  const double r2 = radius * radius;
+  for (auto it = map_.begin(); it != map_.end();) {
+    if ((it->second.front() - origin).squaredNorm() > r2) {
+      points_ -= it->second.size();
+      it = map_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+}
+
+bool VoxelHashMap::nearest(const Eigen::Vector3d& p, double max_distance,
+                           Eigen::Vector3d& q) const {
+  const Eigen::Array3i c = voxelOf(p, inv_voxel_);
+  double best = max_distance * max_distance;
+  bool found = false;
+  for (int dx = -1; dx <= 1; ++dx) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dz = -1; dz <= 1; ++dz) {
+        const auto it = map_.find(packVoxel(c.x() + dx, c.y() + dy, c.z() + dz));
+        if (it == map_.end()) continue;
+        for (const Eigen::Vector3d& m : it->second) {
+          const double d2 = (m - p).squaredNorm();
+          if (d2 < best) {
+            best = d2;
+            q = m;
+            found = true;
+          }
+        }
+      }
+    }
+  }
+  return found;
+}
+
+std::size_t VoxelHashMap::bytes() const {
+  // Each voxel: a hash node (key, vector header, next pointer) plus a bucket pointer, and its
+  // reserved point storage.
+  const std::size_t node =
+      sizeof(std::uint64_t) + sizeof(std::vector<Eigen::Vector3d>) + sizeof(void*) + sizeof(void*);
+  return map_.size() * (node + static_cast<std::size_t>(max_points_) * sizeof(Eigen::Vector3d));
+}
+
+std::vector<Eigen::Vector3d> VoxelHashMap::cloud() const {
+  std::vector<Eigen::Vector3d> out;
+  out.reserve(points_);
+  for (const auto& kv : map_) out.insert(out.end(), kv.second.begin(), kv.second.end());
+  return out;
+}
+
+}  // namespace metricmap

@@ -1,0 +1,50 @@
+#pragma once
+/// \file voxel_hash_map.h
+/// \brief The odometry's local map: a hash of voxels, each holding at most a few points, and
+/// cut to a range window around the sensor.
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "metricmap/registration/voxel_key.h"
+
+namespace metricmap {
+
+/// \brief Points in a voxel hash, at most `max_points` per voxel, first come first kept.
+class VoxelHashMap {
+ public:
+  /// \throws std::invalid_argument when `voxel` is not finite > 0 or `max_points` < 1
+  VoxelHashMap(double voxel, int max_points);
+
+  /// \brief Add world points; those that fall in a full voxel are dropped.
+  void add(const std::vector<Eigen::Vector3d>& points);
+  /// \brief Drop every voxel whose first point lies farther than `radius` from `origin`.
+  void removeFar(const Eigen::Vector3d& origin, double radius);
+  /// \brief Nearest map point to `p` among the 27 voxels around it; false when none is within
+  /// `max_distance`.
+  bool nearest(const Eigen::Vector3d& p, double max_distance, Eigen::Vector3d& q) const;
+
+  /// \brief Number of voxels / points held.
+  std::size_t voxels() const { return map_.size(); }
+  std::size_t points() const { return points_; }
+  bool empty() const { return map_.empty(); }
+  /// \brief Bytes held by the points and the hash nodes (an estimate from the sizes).
+  std::size_t bytes() const;
+  /// \brief Every point held (for inspection and tests).
+  std::vector<Eigen::Vector3d> cloud() const;
+  void clear() {
+    map_.clear();
+    points_ = 0;
+  }
+
+ private:
+  double voxel_, inv_voxel_;
+  int max_points_;
+  std::size_t points_ = 0;
+  std::unordered_map<std::uint64_t, std::vector<Eigen::Vector3d>, VoxelKeyHash> map_;
+};
+
+}  // namespace metricmap
