@@ -14,6 +14,7 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
+#include "metricmap/io/output_set.h"
 #include "metricmap/kitti/kitti_sequence.h"
 #include "metricmap/mapping/scan_mapper.h"
 #include "table.h"
@@ -24,7 +25,7 @@ namespace {
 struct KittiOptions {
   std::string root, sequence = "00", frames, world = "camera", out_cloud, out_map;
   std::string pcd_format = "binary", map_plane = "xz", format = "table", refine, perturb;
-  std::string refine_target = "map", out_poses;
+  std::string refine_target = "map", out_poses, poses = "file";
   unsigned seed = 1;
   long long first = -1, count = 0, min_hits = 1;
   ScanMapperConfig mapper;  // ranges, voxel, height band, map resolution: its defaults
@@ -68,6 +69,7 @@ ScanMapperConfig mapperConfig(const KittiOptions& o, KittiWorld world) {
   c.registration.enabled = !o.refine.empty();
   if (c.registration.enabled) c.registration.refine.method = parseRefineMethod(o.refine);
   c.registration.target = parseRegistrationTarget(o.refine_target);
+  c.odometry = o.poses == "odometry";
   try {
     validateScanMapperConfig(c);
   } catch (const std::invalid_argument& e) {
@@ -110,6 +112,10 @@ nlohmann::json registrationJson(const KittiOptions& o, const std::vector<double>
 void run(const KittiOptions& o) {
   const auto t_start = std::chrono::steady_clock::now();
   const std::vector<std::size_t> frames = selectFrames(o);
+  if (o.poses == "odometry" && !o.perturb.empty()) {
+    throw CLI::ValidationError("--perturb",
+                               "moves poses from the pose file; not with --poses odometry");
+  }
   const std::vector<double> perturb =
       o.perturb.empty() ? std::vector<double>{0.0, 0.0} : perturbation(o.perturb);
   const KittiWorld world = o.world == "velodyne" ? KittiWorld::Velodyne : KittiWorld::Camera;
@@ -120,8 +126,14 @@ void run(const KittiOptions& o) {
   }
   const Eigen::Isometry3d tr = readKittiCalibTr(seq.calib());
   const std::size_t last = *std::max_element(frames.begin(), frames.end());
-  const std::vector<Eigen::Isometry3d> poses = readKittiPoses(seq.poses(), last + 1);
-  ScanMapper mapper(config);
+  const bool odometry = o.poses == "odometry";  // no pose file needed, none read
+  const std::vector<Eigen::Isometry3d> poses =
+      odometry ? std::vector<Eigen::Isometry3d>() : readKittiPoses(seq.poses(), last + 1);
+  ScanMapperConfig with_origin = config;
+  // Odometry poses start at the first frame's velodyne; the world is its camera 0 or itself.
+  if (odometry && world == KittiWorld::Camera) with_origin.odometry_origin = tr;
+  ScanMapper mapper(with_origin);
+  nlohmann::json odometry_frames = nlohmann::json::array();
 
   std::mt19937 rng(o.seed);
   std::vector<FrameReport> reports;
@@ -134,13 +146,23 @@ void run(const KittiOptions& o) {
     pcl::PointCloud<pcl::PointXYZ> scan;
     loadCloud(seq.scan(frames[k]), scan);
     load_s += secondsSince(t);
-    truths.push_back(kittiScanToWorld(poses[frames[k]], tr, world));
-    Eigen::Isometry3d pose = truths.back();
-    if ((perturb[0] > 0.0 || perturb[1] > 0.0) && k > 0) {
-      pose = perturbPose(pose, perturb[0], perturb[1], rng);
-    }
     try {
-      reports.push_back(mapper.addScan(scan, pose));
+      if (odometry) {
+        reports.push_back(mapper.addScan(scan));
+        const OdometryResult& r = mapper.lastOdometry();
+        odometry_frames.push_back({{"frame", frames[k]},
+                                   {"correspondences", r.correspondences},
+                                   {"iterations", r.iterations},
+                                   {"threshold", r.threshold},
+                                   {"degenerate_directions", r.degenerate_directions}});
+      } else {
+        truths.push_back(kittiScanToWorld(poses[frames[k]], tr, world));
+        Eigen::Isometry3d pose = truths.back();
+        if ((perturb[0] > 0.0 || perturb[1] > 0.0) && k > 0) {
+          pose = perturbPose(pose, perturb[0], perturb[1], rng);
+        }
+        reports.push_back(mapper.addScan(scan, pose));
+      }
     } catch (const InputError& e) {
       throw InputError(seq.scan(frames[k]) + ": " + e.what());
     }
@@ -166,26 +188,40 @@ void run(const KittiOptions& o) {
     throw InputError("the map is empty: no point fell within the range and height bands");
   }
   const pcl::PointCloud<pcl::PointXYZ> global = mapper.globalCloud();
+  OutputSet outputs;  // every output or none
   if (!o.out_poses.empty()) {
     std::vector<Eigen::Isometry3d> out;
     for (const Eigen::Isometry3d& p : mapper.poses()) out.push_back(kittiPoseOfScan(p, tr, world));
-    writeTextAtomic(o.out_poses, formatKittiPoses(out));
+    writeTextAtomic(outputs.stage(o.out_poses), formatKittiPoses(out));
   }
-  if (!o.out_cloud.empty()) savePcdAtomic(o.out_cloud, global, parsePcdFormat(o.pcd_format));
+  if (!o.out_cloud.empty()) {
+    savePcdAtomic(outputs.stage(o.out_cloud), global, parsePcdFormat(o.pcd_format));
+  }
   if (!o.out_map.empty()) {
-    const std::string stem = o.out_map.substr(0, o.out_map.find_last_of('.'));
-    writeMapServer(image, mapper.config().min_hits, o.out_map, stem + "_preview.png",
-                   stem + "_heat.png");
+    MapServerFiles files = mapServerFiles(o.out_map);
+    for (std::string* path : {&files.pgm, &files.yaml, &files.preview_png, &files.heat_png}) {
+      *path = outputs.stage(*path);
+    }
+    writeMapServer(image, mapper.config().min_hits, files);
   }
+  outputs.commit();
   const std::size_t occupied = mapper.occupiedCells();
   const double write_s = secondsSince(t);
 
   nlohmann::json reg_summary = nullptr;
-  if (!o.refine.empty() || !o.perturb.empty()) {
+  if (!odometry && (!o.refine.empty() || !o.perturb.empty())) {
     reg_summary = registrationJson(o, perturb, frames, reports, mapper.trajectoryError(truths));
+  }
+  nlohmann::json odometry_summary = nullptr;
+  if (odometry) {
+    double seconds = 0.0;
+    for (const FrameReport& r : reports) seconds += r.seconds_register;
+    odometry_summary = {{"frames", odometry_frames}, {"seconds", seconds}};
   }
   if (o.format == "json") {
     emit(nlohmann::json({{"frames", frames.size()},
+                         {"poses", o.poses},
+                         {"odometry", odometry_summary},
                          {"registration", reg_summary},
                          {"points_read", read},
                          {"points_kept", kept},
@@ -287,6 +323,11 @@ void addKittiCommand(CLI::App& app) {
           },
           "T,R"));
   sub->add_option("--seed", o->seed, "Random seed for --perturb")->capture_default_str();
+  sub->add_option("--poses", o->poses,
+                  "file: poses/NN.txt; odometry: from the scans (LidarOdometry), no pose file "
+                  "needed (--refine still applies on top)")
+      ->check(CLI::IsMember({"file", "odometry"}))
+      ->capture_default_str();
   addFormatOption(*sub, o->format, {"table", "json"});
   sub->callback([o] { run(*o); });
 }

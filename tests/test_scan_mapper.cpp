@@ -171,6 +171,28 @@ TEST(ScanMapper, TooFewRegistrationPointsIsAnErrorNamingTheScan) {
   }
 }
 
+TEST(ScanMapper, OdometryPosesNeedNoPoseFile) {
+  ScanMapperConfig config;
+  config.min_range = 2.5;
+  EXPECT_THROW(ScanMapper(config).addScan(frames().scans[0]), std::logic_error);
+  config.odometry = true;
+  const Eigen::Isometry3d tr = readKittiCalibTr(kSeq.calib());
+  config.odometry_origin = tr;  // the camera world of the first frame
+  ScanMapper mapper(config);
+  for (std::size_t i = 0; i < 6; ++i) mapper.addScan(frames().scans[i]);
+  ASSERT_EQ(mapper.poses().size(), 6u);
+  EXPECT_TRUE(mapper.poses()[0].isApprox(tr, 1e-9));
+  for (std::size_t i = 1; i < 6; ++i) {
+    // The scans' own motion (docs/KITTI.md): 0.67-0.74 m per frame, mostly forward (+z).
+    const Eigen::Vector3d step =
+        mapper.poses()[i].translation() - mapper.poses()[i - 1].translation();
+    EXPECT_GT(step.norm(), 0.6) << i;
+    EXPECT_LT(step.norm(), 0.8) << i;
+    EXPECT_GT(step.z(), 0.95 * step.norm()) << i;
+  }
+  EXPECT_GT(mapper.occupiedCells(), 10000u);
+}
+
 TEST(ScanMapper, BadConfigurationsAreRefused) {
   auto bad = [](auto change) {
     ScanMapperConfig c;

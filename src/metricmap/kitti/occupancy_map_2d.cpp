@@ -105,8 +105,15 @@ MapImage OccupancyMap2D::image(std::uint64_t max_pixels) const {
   return m;
 }
 
-std::size_t writeMapServer(const MapImage& map, std::uint32_t min_hits, const std::string& pgm_path,
-                           const std::string& preview_png, const std::string& heat_png) {
+MapServerFiles mapServerFiles(const std::string& pgm_path) {
+  const auto dot = pgm_path.find_last_of('.'), slash = pgm_path.find_last_of('/');
+  const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  const std::string stem = has_ext ? pgm_path.substr(0, dot) : pgm_path;
+  return {pgm_path, stem + ".yaml", stem + "_preview.png", stem + "_heat.png", baseName(pgm_path)};
+}
+
+std::size_t writeMapServer(const MapImage& map, std::uint32_t min_hits,
+                           const MapServerFiles& files) {
   if (map.width == 0) throw std::invalid_argument("the map is empty: no point was projected");
   std::vector<std::uint8_t> grey(map.hits.size());
   std::size_t occupied = 0;
@@ -117,20 +124,19 @@ std::size_t writeMapServer(const MapImage& map, std::uint32_t min_hits, const st
     occupied += occ ? 1 : 0;
     most = std::max(most, map.hits[i]);
   }
-  writePgm(pgm_path, map.width, map.height, grey);
+  writePgm(files.pgm, map.width, map.height, grey);
 
   YAML::Emitter yaml;
   yaml.SetDoublePrecision(10);
-  yaml << YAML::BeginMap << YAML::Key << "image" << YAML::Value << baseName(pgm_path) << YAML::Key
+  yaml << YAML::BeginMap << YAML::Key << "image" << YAML::Value << files.image_name << YAML::Key
        << "resolution" << YAML::Value << map.resolution << YAML::Key << "origin" << YAML::Value
        << YAML::Flow << YAML::BeginSeq << map.origin_x << map.origin_y << 0.0 << YAML::EndSeq
        << YAML::Key << "negate" << YAML::Value << 0 << YAML::Key << "occupied_thresh" << YAML::Value
        << 0.65 << YAML::Key << "free_thresh" << YAML::Value << 0.196 << YAML::EndMap;
-  const std::string stem = pgm_path.substr(0, pgm_path.find_last_of('.'));
-  writeTextAtomic(stem + ".yaml", std::string(yaml.c_str()) + "\n");
+  writeTextAtomic(files.yaml, std::string(yaml.c_str()) + "\n");
 
-  if (!preview_png.empty()) writePng(preview_png, map.width, map.height, 1, grey);
-  if (!heat_png.empty()) {
+  if (!files.preview_png.empty()) writePng(files.preview_png, map.width, map.height, 1, grey);
+  if (!files.heat_png.empty()) {
     std::vector<std::uint8_t> heat(map.hits.size() * 3, 0);
     const double scale = std::log1p(static_cast<double>(most));
     for (std::size_t i = 0; i < map.hits.size(); ++i) {
@@ -140,7 +146,7 @@ std::size_t writeMapServer(const MapImage& map, std::uint32_t min_hits, const st
       heat[3 * i + 1] = static_cast<std::uint8_t>(255 * std::max(0.0, 1.5 * t - 0.5));
       heat[3 * i + 2] = static_cast<std::uint8_t>(255 * std::max(0.0, 0.6 - t));
     }
-    writePng(heat_png, map.width, map.height, 3, heat);
+    writePng(files.heat_png, map.width, map.height, 3, heat);
   }
   return occupied;
 }

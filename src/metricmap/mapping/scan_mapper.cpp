@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -90,7 +91,20 @@ ScanMapper::ScanMapper(const ScanMapperConfig& config)
     : config_(config),
       map_((validateScanMapperConfig(config), config.map_resolution), config.plane),
       global_(std::make_shared<Cloud>()),
-      target_(std::make_shared<Cloud>()) {}
+      target_(std::make_shared<Cloud>()) {
+  if (config.odometry) odometry_ = std::make_unique<LidarOdometry>(config.odometry_config);
+}
+
+FrameReport ScanMapper::addScan(const Cloud& scan_in_sensor) {
+  if (!odometry_) throw std::logic_error("ScanMapper::addScan(scan) needs `odometry` on");
+  const auto t = std::chrono::steady_clock::now();
+  last_odometry_ =
+      odometry_->registerFrame(scan_in_sensor, {}, "scan " + std::to_string(used_.size()));
+  const double odometry_s = secondsSince(t);
+  FrameReport r = addScan(scan_in_sensor, config_.odometry_origin * last_odometry_.pose);
+  r.seconds_register += odometry_s;
+  return r;
+}
 
 FrameReport ScanMapper::addScan(const Cloud& scan_in_sensor, const Eigen::Isometry3d& pose) {
   const RegistrationConfig& reg = config_.registration;

@@ -14,6 +14,7 @@
 
 #include "metricmap/kitti/occupancy_map_2d.h"
 #include "metricmap/kitti/scan_registration.h"
+#include "metricmap/registration/lidar_odometry.h"
 
 namespace metricmap {
 
@@ -51,6 +52,11 @@ struct ScanMapperConfig {
   std::uint32_t min_hits = 1;                      ///< hits that make a map cell occupied
   bool keep_global_cloud = true;                   ///< accumulate the registered scans
   RegistrationConfig registration;
+  /// Poses from the scans themselves (LidarOdometry) for addScan(scan) without a pose.
+  bool odometry = false;
+  LidarOdometryConfig odometry_config;
+  /// World pose of the first scan's sensor for odometry poses (KITTI camera world: Tr).
+  Eigen::Isometry3d odometry_origin = Eigen::Isometry3d::Identity();
 };
 
 /// \brief \throws std::invalid_argument naming the first bad parameter
@@ -95,6 +101,14 @@ class ScanMapper {
   /// \throws InputError when registration is on and the scan or target has too few points
   FrameReport addScan(const Cloud& scan_in_sensor, const Eigen::Isometry3d& pose);
 
+  /// \brief Add one scan (sensor frame) whose pose comes from LidarOdometry: the odometry's
+  /// pose (sensor -> first sensor) moved by `odometry_origin`; registration, when on, refines it.
+  /// \throws std::logic_error unless `odometry` is on; InputError for a scan with no usable point
+  FrameReport addScan(const Cloud& scan_in_sensor);
+
+  /// \brief The odometry's result for the last scan added with addScan(scan).
+  const OdometryResult& lastOdometry() const { return last_odometry_; }
+
   /// \brief The 2D hit map so far.
   const OccupancyMap2D& map() const { return map_; }
   /// \brief Cells of the map with at least `min_hits` hits.
@@ -120,6 +134,8 @@ class ScanMapper {
   Cloud::Ptr global_;
   Cloud::Ptr target_;
   std::vector<Eigen::Isometry3d> given_, used_;
+  std::unique_ptr<LidarOdometry> odometry_;
+  OdometryResult last_odometry_;
 };
 
 /// \brief The points of `scan` whose distance from the origin lies in [min_range, max_range].
