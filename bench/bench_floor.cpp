@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "bench_common.h"
-#include "metricmap/common/fast_floor.h"
+#include "metricmap/detail/fast_floor.h"
 
 namespace metricmap::bench {
 namespace {

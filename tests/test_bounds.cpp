@@ -8,8 +8,8 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
-#include "metricmap/common/bounds.h"
-#include "metricmap/common/point_span_pcl.h"
+#include "metricmap/detail/bounds.h"
+#include "metricmap/detail/point_span_pcl.h"
 
 namespace metricmap {
 namespace {

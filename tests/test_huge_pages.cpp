@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "metricmap/common/huge_pages.h"
+#include "metricmap/detail/huge_pages.h"
 
 namespace metricmap {
 namespace {

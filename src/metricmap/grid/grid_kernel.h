@@ -2,14 +2,11 @@
 /// \file grid_kernel.h
 /// \brief The non-template core of OccupancyGrid: bins a strided float array.
 
-#include "metricmap/common/key_sorter.h"
-#include "metricmap/common/point_span.h"
+#include "metricmap/detail/key_sorter.h"
+#include "metricmap/detail/point_span.h"
 #include "metricmap/grid/grid_types.h"
 
 namespace metricmap {
-
-/// \brief Throws std::invalid_argument unless the cell size is finite and > 0.
-void validateCellSize(float cell_size);
 
 /// \brief Scratch memory of a grid build, kept between builds (fresh pages are costly).
 struct GridWorkspace {

@@ -62,4 +62,10 @@ struct GridResult {
   GridStatistics stats;
 };
 
+/// \brief Throws std::invalid_argument unless the cell size is finite and > 0.
+void validateCellSize(float cell_size);
+
+/// \brief Scratch memory of a grid build (defined in grid_kernel.h).
+struct GridWorkspace;
+
 }  // namespace metricmap

@@ -10,7 +10,7 @@
 
 #include <pcl/filters/filter.h>
 
-#include "metricmap/grid/grid_kernel.h"
+#include "metricmap/common/scratch.h"
 #include "metricmap/grid/grid_types.h"
 
 namespace metricmap {
@@ -91,7 +91,7 @@ class OccupancyGrid : public pcl::Filter<PointT> {
 
  private:
   GridParams params_;
-  GridWorkspace workspace_;  // scratch kept between builds
+  Scratch<GridWorkspace> workspace_;  // kept between builds
   GridResult result_;
 };
 

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "metricmap/common/fast_floor.h"
+#include "metricmap/detail/fast_floor.h"
 #include "metricmap/exceptions.h"
 
 namespace metricmap {

@@ -7,7 +7,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "metricmap/common/fast_floor.h"
+#include "metricmap/detail/fast_floor.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/array_writers.h"
 #include "metricmap/io/cloud_writer.h"

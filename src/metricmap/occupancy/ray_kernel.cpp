@@ -8,7 +8,7 @@
 
 #include <emmintrin.h>
 
-#include "metricmap/common/fast_floor.h"
+#include "metricmap/detail/fast_floor.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/occupancy/voxel_key.h"
 

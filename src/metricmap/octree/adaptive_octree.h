@@ -9,7 +9,7 @@
 
 #include <pcl/filters/filter.h>
 
-#include "metricmap/octree/octree_kernel.h"
+#include "metricmap/common/scratch.h"
 #include "metricmap/octree/octree_types.h"
 
 namespace metricmap {
@@ -91,7 +91,7 @@ class AdaptiveOctree : public pcl::Filter<PointT> {
 
  private:
   OctreeParams params_;
-  OctreeWorkspace workspace_;  // scratch kept between builds
+  Scratch<OctreeWorkspace> workspace_;  // kept between builds
   OctreeResult result_;
 };
 

@@ -6,11 +6,11 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "metricmap/common/bounds.h"
-#include "metricmap/common/fast_floor.h"
-#include "metricmap/common/huge_pages.h"
-#include "metricmap/common/parallel.h"
-#include "metricmap/common/simd_points.h"
+#include "metricmap/detail/bounds.h"
+#include "metricmap/detail/fast_floor.h"
+#include "metricmap/detail/huge_pages.h"
+#include "metricmap/detail/parallel.h"
+#include "metricmap/detail/simd_points.h"
 #include "metricmap/exceptions.h"
 
 namespace metricmap {

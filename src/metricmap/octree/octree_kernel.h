@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "metricmap/common/key_sorter.h"
-#include "metricmap/common/point_span.h"
+#include "metricmap/detail/key_sorter.h"
+#include "metricmap/detail/point_span.h"
 #include "metricmap/octree/octree_types.h"
 
 namespace metricmap {
@@ -16,10 +16,6 @@ struct OctreeWorkspace {
   std::vector<std::size_t> stack;
   std::vector<Eigen::Vector3d> sums;
 };
-
-/// \brief Throws std::invalid_argument unless min_cell_size is finite and >= 0, and a root
-/// box (if any) is finite with max >= min.
-void validateOctreeParams(const OctreeParams& params);
 
 /// \brief Build the adaptive octree of the finite points of `points`.
 /// A node splits into 8 equal children iff it holds more than max_points_per_leaf points, its

@@ -68,4 +68,11 @@ struct OctreeResult {
   OctreeStatistics stats;
 };
 
+/// \brief Throws std::invalid_argument for a negative or non-finite min cell size or a bad
+/// root box.
+void validateOctreeParams(const OctreeParams& params);
+
+/// \brief Scratch memory of an octree build (defined in octree_kernel.h).
+struct OctreeWorkspace;
+
 }  // namespace metricmap

@@ -7,8 +7,9 @@
 #include <pcl/point_types.h>
 #include <stdexcept>
 
-#include "metricmap/common/huge_pages.h"
-#include "metricmap/common/point_span_pcl.h"
+#include "metricmap/detail/huge_pages.h"
+#include "metricmap/detail/point_span_pcl.h"
+#include "metricmap/grid/grid_kernel.h"
 #include "metricmap/grid/occupancy_grid.h"
 
 namespace metricmap {
@@ -17,7 +18,7 @@ template <typename PointT>
 void OccupancyGrid<PointT>::compute() {
   if (!input_) throw std::invalid_argument("OccupancyGrid: no input cloud set");
   const pcl::Indices* idx = (fake_indices_ || !indices_) ? nullptr : indices_.get();
-  buildGrid(makePointSpan(*input_, idx), params_, workspace_, result_);
+  buildGrid(makePointSpan(*input_, idx), params_, workspace_.get(), result_);
 }
 
 template <typename PointT>

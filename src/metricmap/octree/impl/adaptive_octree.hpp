@@ -5,9 +5,10 @@
 
 #include <pcl/point_types.h>
 
-#include "metricmap/common/huge_pages.h"
-#include "metricmap/common/point_span_pcl.h"
+#include "metricmap/detail/huge_pages.h"
+#include "metricmap/detail/point_span_pcl.h"
 #include "metricmap/octree/adaptive_octree.h"
+#include "metricmap/octree/octree_kernel.h"
 
 namespace metricmap {
 
@@ -33,7 +34,7 @@ template <typename PointT>
 void AdaptiveOctree<PointT>::compute() {
   if (!input_) throw std::invalid_argument("AdaptiveOctree: no input cloud set");
   const pcl::Indices* idx = (fake_indices_ || !indices_) ? nullptr : indices_.get();
-  buildOctree(makePointSpan(*input_, idx), params_, workspace_, result_);
+  buildOctree(makePointSpan(*input_, idx), params_, workspace_.get(), result_);
 }
 
 template <typename PointT>

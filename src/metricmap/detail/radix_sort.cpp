@@ -1,9 +1,9 @@
-#include "metricmap/common/radix_sort.h"
+#include "metricmap/detail/radix_sort.h"
 
 #include <algorithm>
 #include <cstddef>
 
-#include "metricmap/common/huge_pages.h"
+#include "metricmap/detail/huge_pages.h"
 
 namespace metricmap {
 namespace {

@@ -1,4 +1,4 @@
-#include "metricmap/common/huge_pages.h"
+#include "metricmap/detail/huge_pages.h"
 
 #include <cstdint>
 

@@ -4,7 +4,7 @@
 
 #include <cstddef>
 
-#include "metricmap/common/point_span.h"
+#include "metricmap/detail/point_span.h"
 
 namespace metricmap {
 

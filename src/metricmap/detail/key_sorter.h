@@ -10,8 +10,8 @@
 #include <cstring>
 #include <vector>
 
-#include "metricmap/common/huge_pages.h"
-#include "metricmap/common/radix_sort.h"
+#include "metricmap/detail/huge_pages.h"
+#include "metricmap/detail/radix_sort.h"
 
 namespace metricmap {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "metricmap/common/parallel.h"
+#include "metricmap/detail/parallel.h"
 
 namespace metricmap {
 

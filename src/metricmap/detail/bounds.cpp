@@ -1,11 +1,11 @@
-#include "metricmap/common/bounds.h"
+#include "metricmap/detail/bounds.h"
 
 #include <algorithm>
 #include <limits>
 #include <vector>
 
-#include "metricmap/common/parallel.h"
-#include "metricmap/common/simd_points.h"
+#include "metricmap/detail/parallel.h"
+#include "metricmap/detail/simd_points.h"
 
 namespace metricmap {
 namespace {

@@ -5,7 +5,7 @@
 #include <pcl/point_cloud.h>
 #include <pcl/types.h>
 
-#include "metricmap/common/point_span.h"
+#include "metricmap/detail/point_span.h"
 
 namespace metricmap {
 
