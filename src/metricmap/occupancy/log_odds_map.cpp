@@ -93,6 +93,9 @@ ScanInsertReport LogOddsMap::insertRaw(const float* xyz, std::size_t stride_byte
 
 void LogOddsMap::applyScan(ScanInsertReport& report) {
   const float hit = hit_, miss = miss_, lo = clamp_min_, hi = clamp_max_;
+  // at most one (geometric) growth per scan
+  const std::size_t need = blocks_.size() + scratch_.blocks.size();
+  if (need > blocks_.capacity()) blocks_.reserve(std::max(need, 2 * blocks_.capacity()));
   for (const detail::ScanBlock& sb : scratch_.blocks) {
     VoxelBlock& b = blockFor(sb.key);
     for (int w = 0; w < kBlockWords; ++w) {

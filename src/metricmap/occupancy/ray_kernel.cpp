@@ -217,6 +217,71 @@ inline void walkBeamLinear(const Beam& b, LinearBits& free) {
   }
 }
 
+/// walkBeamLinear's state, so that two beams can be stepped in one loop (their steps are
+/// independent, which hides the latency of each).
+struct LinearState {
+  __m128d tx, ty, tz, dx, dy, dz, len;
+  std::int64_t kx, ky, kz, sx, sy, sz, ix, iy, iz, ex, ey, ez, idx;
+};
+
+inline void initState(const Beam& b, const LinearBits& free, LinearState& s) {
+  s.tx = b.t[0];
+  s.ty = b.t[1];
+  s.tz = b.t[2];
+  s.dx = b.dt[0];
+  s.dy = b.dt[1];
+  s.dz = b.dt[2];
+  s.len = b.length;
+  s.kx = b.k[0];
+  s.ky = b.k[1];
+  s.kz = b.k[2];
+  s.sx = b.step[0];
+  s.sy = b.step[1];
+  s.sz = b.step[2];
+  s.ix = s.sx;
+  s.iy = s.sy * free.row_bits;
+  s.iz = s.sz * free.slice_bits;
+  s.ex = b.ke[0];
+  s.ey = b.ke[1];
+  s.ez = b.ke[2];
+  s.idx = free.index(s.kx, s.ky, s.kz);
+}
+
+/// One step of OctoMap's loop; marks the voxel and returns true, or false when the beam is done.
+inline bool stepState(LinearState& s, std::uint64_t* bits) {
+  const __m128d x_lt_y = _mm_cmplt_sd(s.tx, s.ty);
+  const __m128d mx = _mm_and_pd(x_lt_y, _mm_cmplt_sd(s.tx, s.tz));
+  const __m128d my = _mm_andnot_pd(x_lt_y, _mm_cmplt_sd(s.ty, s.tz));
+  const __m128d mz = _mm_andnot_pd(_mm_or_pd(mx, my), _mm_castsi128_pd(_mm_set1_epi64x(-1)));
+  s.tx = _mm_add_sd(s.tx, _mm_and_pd(mx, s.dx));
+  s.ty = _mm_add_sd(s.ty, _mm_and_pd(my, s.dy));
+  s.tz = _mm_add_sd(s.tz, _mm_and_pd(mz, s.dz));
+  const std::int64_t bx = maskBits(mx), by = maskBits(my), bz = maskBits(mz);
+  s.kx += s.sx & bx;
+  s.ky += s.sy & by;
+  s.kz += s.sz & bz;
+  s.idx += (s.ix & bx) + (s.iy & by) + (s.iz & bz);
+  if (((s.kx ^ s.ex) | (s.ky ^ s.ey) | (s.kz ^ s.ez)) == 0) return false;
+  if (_mm_comigt_sd(_mm_min_sd(_mm_min_sd(s.tx, s.ty), s.tz), s.len)) return false;
+  bits[s.idx >> 6] |= std::uint64_t{1} << (s.idx & 63);
+  return true;
+}
+
+/// Two beams at a time until one ends, then the other alone.
+inline void walkPair(const Beam& a, const Beam& b, LinearBits& free) {
+  LinearState sa, sb;
+  initState(a, free, sa);
+  initState(b, free, sb);
+  std::uint64_t* bits = free.bits;
+  bool ra = true, rb = true;
+  while (ra && rb) {
+    ra = stepState(sa, bits);
+    rb = stepState(sb, bits);
+  }
+  while (ra) ra = stepState(sa, bits);
+  while (rb) rb = stepState(sb, bits);
+}
+
 /// Moves the set bits of a LinearBits box into the scan's blocks (free or hit words), zeroing
 /// them: each byte of a word is one block row of 8 voxels.
 void harvest(LinearBits& box, std::int64_t words_per_row, std::int64_t rows_y, std::int64_t rows_z,
@@ -323,14 +388,19 @@ RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
                     words_per_row * 64 * ny};
     LinearBits hits = free;
     hits.bits = out.dense.data() + words;
-    Beam beam;
+    Beam beams[2];
+    int pending = 0;
     for (const ScanUpdate::End& end : out.ends) {
       if (end.hit) hits.set(hits.index(end.k[0], end.k[1], end.k[2]));
       if (ko.v[0] == end.k[0] && ko.v[1] == end.k[1] && ko.v[2] == end.k[2]) continue;
       free.set(free.index(ko.v[0], ko.v[1], ko.v[2]));
-      startBeam(o, end.e, ko, end.k, res, beam);
-      walkBeamLinear(beam, free);
+      startBeam(o, end.e, ko, end.k, res, beams[pending++]);
+      if (pending == 2) {
+        walkPair(beams[0], beams[1], free);
+        pending = 0;
+      }
     }
+    if (pending == 1) walkBeamLinear(beams[0], free);
     harvest(free, words_per_row, ny, nz, false, marker);
     harvest(hits, words_per_row, ny, nz, true, marker);
   } else {
