@@ -243,7 +243,8 @@ LogOddsMemory LogOddsMap::memory() const {
   LogOddsMemory m;
   m.blocks = blocks_.size();
   m.known_voxels = known_;
-  m.bytes = blocks_.capacity() * sizeof(VoxelBlock) + index_.bytes();
+  m.bytes = blocks_.size() * sizeof(VoxelBlock) + index_.bytes();
+  m.reserved_bytes = blocks_.capacity() * sizeof(VoxelBlock) + index_.bytes();
   m.bytes_per_known_voxel =
       known_ == 0 ? 0.0 : static_cast<double>(m.bytes) / static_cast<double>(known_);
   return m;
