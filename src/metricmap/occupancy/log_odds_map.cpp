@@ -28,8 +28,8 @@ inline float clampLogOdds(float v, float lo, float hi) {
 VoxelKey voxelOf(const VoxelBlock& b, int i) {
   const VoxelKey bk = unpackVoxelKey(b.key);
   constexpr int m = detail::kBlockEdge - 1;
-  return {(bk.x << kBlockShift) + (i & m), (bk.y << kBlockShift) + ((i >> kBlockShift) & m),
-          (bk.z << kBlockShift) + (i >> (2 * kBlockShift))};
+  return {bk.x * detail::kBlockEdge + (i & m), bk.y * detail::kBlockEdge + ((i >> kBlockShift) & m),
+          bk.z * detail::kBlockEdge + (i >> (2 * kBlockShift))};
 }
 
 }  // namespace

@@ -377,7 +377,7 @@ RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
     out.ends.push_back(end);
   }
   // the box of the scan: x from a multiple of 64, rows padded to 64 bits
-  const std::int64_t x0 = (lo[0] >> 6) << 6;
+  const std::int64_t x0 = (lo[0] >> 6) * 64;  // a multiple of 64 (and of 8)
   const std::int64_t words_per_row = ((hi[0] - x0) >> 6) + 1;
   const std::int64_t ny = hi[1] - lo[1] + 1, nz = hi[2] - lo[2] + 1;
   Marker marker(out);
