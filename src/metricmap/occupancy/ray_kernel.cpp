@@ -376,7 +376,13 @@ RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
     }
     out.ends.push_back(end);
   }
-  // the box of the scan: x from a multiple of 64, rows padded to 64 bits
+  // The box of the scan: x from a multiple of 64, rows padded to 64 bits. OctoMap's walk may
+  // step one voxel past an end voxel when a beam ends within rounding of a voxel edge (it then
+  // stops on the length test), so the box has a margin of 2 voxels on every side.
+  for (int i = 0; i < 3; ++i) {
+    lo[i] -= 2;
+    hi[i] += 2;
+  }
   const std::int64_t x0 = (lo[0] >> 6) * 64;  // a multiple of 64 (and of 8)
   const std::int64_t words_per_row = ((hi[0] - x0) >> 6) + 1;
   const std::int64_t ny = hi[1] - lo[1] + 1, nz = hi[2] - lo[2] + 1;
