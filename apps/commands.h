@@ -15,5 +15,6 @@ void addDepthToCloudCommand(CLI::App& app);
 void addHeightMapCommand(CLI::App& app);
 void addKittiCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
+void addOccupancyCommand(CLI::App& app);
 
 }  // namespace metricmap::cli

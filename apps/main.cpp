@@ -43,12 +43,14 @@ int main(int argc, char** argv) {
   metricmap::cli::addHeightMapCommand(app);
   metricmap::cli::addKittiCommand(app);
   metricmap::cli::addViewCommand(app);
+  metricmap::cli::addOccupancyCommand(app);
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
     for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->check_name(argv[1]);
     if (!known) {
       std::cerr << "metricmap: usage: unknown subcommand '" << argv[1]
-                << "' (info, grid, octree, compare, lines, depth-to-cloud, heightmap, kitti; see "
+                << "' (info, grid, octree, compare, lines, depth-to-cloud, heightmap, kitti, view, "
+                   "occupancy; see "
                    "--help)\n";
       return 2;
     }

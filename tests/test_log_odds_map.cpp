@@ -143,6 +143,61 @@ TEST(LogOddsMap, BadScansLeaveTheMapUnchanged) {
   EXPECT_EQ(map.state(Eigen::Vector3d(50001.0, 0.0, 0.0)), VoxelState::Occupied);
 }
 
+// Beams kilometres long and diagonal: the scan's box is too large for the dense per-scan bits,
+// so the hashed per-scan blocks are used; the same voxels as the plain walk.
+TEST(LogOddsMap, LongBeamsThroughTheSparsePath) {
+  LogOddsParams p;
+  p.resolution = 0.1;  // no max range
+  LogOddsMap map(p);
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  cloud.push_back({3000.37f, 2000.11f, 1000.73f});
+  cloud.push_back({-2500.2f, 1500.9f, -800.4f});
+  const Eigen::Vector3f origin(0.33f, -0.21f, 1.7f);
+  const ScanInsertReport r = map.insertScan(cloud, origin);
+  EXPECT_EQ(r.beams_cut, 0u);
+  std::set<Key> free;
+  for (const auto& pt : cloud) {
+    plainWalk(origin.cast<double>(), pt.getVector3fMap().cast<double>(), p.resolution, free);
+  }
+  ASSERT_GT(free.size(), 100000u);
+  std::size_t ok = 0;
+  for (const Key& k : free) ok += map.state(toKey(k)) == VoxelState::Free ? 1 : 0;
+  EXPECT_GE(static_cast<double>(ok), 0.999 * static_cast<double>(free.size()));
+  EXPECT_NEAR(static_cast<double>(map.knownVoxels()), static_cast<double>(free.size() + 2),
+              0.001 * static_cast<double>(free.size()));
+  for (const auto& pt : cloud)
+    EXPECT_EQ(map.state(pt.getVector3fMap().cast<double>()), VoxelState::Occupied);
+}
+
+// Beams that start and end on voxel edges and corners (where rounding decides the walk, and
+// OctoMap's walk can step past the end voxel before its length test stops it): every end voxel
+// is occupied, every marked voxel lies within one voxel of the beam's voxels, and (under ASan)
+// nothing is written outside the scan's box.
+TEST(LogOddsMap, BeamsThroughVoxelCorners) {
+  LogOddsParams p;
+  p.resolution = 0.2;
+  LogOddsMap map(p);
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (int x = -6; x <= 6; ++x)
+    for (int y = -6; y <= 6; ++y)
+      for (int z = -3; z <= 3; ++z)
+        cloud.push_back(pcl::PointXYZ(0.2f * static_cast<float>(x), 0.2f * static_cast<float>(y),
+                                      0.2f * static_cast<float>(z)));
+  const Eigen::Vector3f origin(0.4f, -0.2f, 0.0f);
+  const ScanInsertReport r = map.insertScan(cloud, origin);
+  EXPECT_EQ(r.beams, cloud.size());
+  for (const auto& pt : cloud)
+    EXPECT_EQ(map.state(map.keyOf(pt.getVector3fMap().cast<double>())), VoxelState::Occupied);
+  VoxelKey lo, hi;
+  ASSERT_TRUE(map.keyBounds(lo, hi));
+  EXPECT_GE(lo.x, -7);
+  EXPECT_LE(hi.x, 7);
+  EXPECT_GE(lo.y, -7);
+  EXPECT_LE(hi.y, 7);
+  EXPECT_GE(lo.z, -4);
+  EXPECT_LE(hi.z, 4);
+}
+
 // One real scan, every 8th point (15.6k beams), 0.2 m, 50 m: against the plain reference.
 TEST(LogOddsMap, KittiScanAgainstPlainWalk) {
   const test::WorldScan scan = test::subsample(test::kittiWorldScan(3), 8);

@@ -96,5 +96,29 @@ TEST(LogOddsOracle, KittiFramesMatchLiboctomap) {
               0.001 * static_cast<double>(c.union_size));
 }
 
+// Beams from a voxel corner to voxel corners and edges: where the walk is decided by rounding.
+TEST(LogOddsOracle, CornerBeamsMatchLiboctomap) {
+  LogOddsParams params;
+  params.resolution = 0.2;
+  params.max_range = 1.0;  // some beams cut too
+  LogOddsMap ours(params);
+  octomap::OcTree tree(params.resolution);
+  test::WorldScan scan;
+  for (int x = -6; x <= 6; ++x)
+    for (int y = -6; y <= 6; ++y)
+      for (int z = -3; z <= 3; ++z)
+        scan.points.push_back(pcl::PointXYZ(0.2f * static_cast<float>(x),
+                                            0.2f * static_cast<float>(y),
+                                            0.2f * static_cast<float>(z)));
+  scan.origin = Eigen::Vector3f(0.4f, -0.2f, 0.0f);
+  double a = 0, b = 0;
+  insertBoth(scan, ours, tree, params.max_range, a, b);
+  const Comparison c = compare(ours, tree);
+  EXPECT_GT(c.ours, 100u);
+  EXPECT_EQ(c.ours_only + c.theirs_only, 0u);
+  EXPECT_EQ(c.same_log_odds, c.both);
+  EXPECT_EQ(c.same_state, c.both);
+}
+
 }  // namespace
 }  // namespace metricmap

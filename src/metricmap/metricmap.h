@@ -17,5 +17,8 @@
 #include "metricmap/kitti/occupancy_map_2d.h"
 #include "metricmap/lines/line_segment.h"
 #include "metricmap/lines/split_and_merge.h"
+#include "metricmap/occupancy/log_odds_map.h"
+#include "metricmap/occupancy/occupancy_export.h"
+#include "metricmap/occupancy/octomap_io.h"
 #include "metricmap/octree/adaptive_octree.h"
 #include "metricmap/version.h"

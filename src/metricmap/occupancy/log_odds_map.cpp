@@ -28,8 +28,8 @@ inline float clampLogOdds(float v, float lo, float hi) {
 VoxelKey voxelOf(const VoxelBlock& b, int i) {
   const VoxelKey bk = unpackVoxelKey(b.key);
   constexpr int m = detail::kBlockEdge - 1;
-  return {(bk.x << kBlockShift) + (i & m), (bk.y << kBlockShift) + ((i >> kBlockShift) & m),
-          (bk.z << kBlockShift) + (i >> (2 * kBlockShift))};
+  return {bk.x * detail::kBlockEdge + (i & m), bk.y * detail::kBlockEdge + ((i >> kBlockShift) & m),
+          bk.z * detail::kBlockEdge + (i >> (2 * kBlockShift))};
 }
 
 }  // namespace
@@ -93,6 +93,9 @@ ScanInsertReport LogOddsMap::insertRaw(const float* xyz, std::size_t stride_byte
 
 void LogOddsMap::applyScan(ScanInsertReport& report) {
   const float hit = hit_, miss = miss_, lo = clamp_min_, hi = clamp_max_;
+  // at most one (geometric) growth per scan
+  const std::size_t need = blocks_.size() + scratch_.blocks.size();
+  if (need > blocks_.capacity()) blocks_.reserve(std::max(need, 2 * blocks_.capacity()));
   for (const detail::ScanBlock& sb : scratch_.blocks) {
     VoxelBlock& b = blockFor(sb.key);
     for (int w = 0; w < kBlockWords; ++w) {
@@ -240,7 +243,8 @@ LogOddsMemory LogOddsMap::memory() const {
   LogOddsMemory m;
   m.blocks = blocks_.size();
   m.known_voxels = known_;
-  m.bytes = blocks_.capacity() * sizeof(VoxelBlock) + index_.bytes();
+  m.bytes = blocks_.size() * sizeof(VoxelBlock) + index_.bytes();
+  m.reserved_bytes = blocks_.capacity() * sizeof(VoxelBlock) + index_.bytes();
   m.bytes_per_known_voxel =
       known_ == 0 ? 0.0 : static_cast<double>(m.bytes) / static_cast<double>(known_);
   return m;

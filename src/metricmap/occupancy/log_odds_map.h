@@ -31,9 +31,10 @@ struct ScanInsertReport {
   std::size_t miss_voxels = 0;  ///< distinct voxels updated as misses (hits excluded)
 };
 
-/// \brief Bytes held by the map and per known voxel.
+/// \brief Bytes of the map: blocks in use and the hash (`bytes`), per known voxel, and the
+/// block capacity reserved ahead (allocated, mostly untouched).
 struct LogOddsMemory {
-  std::size_t blocks = 0, known_voxels = 0, bytes = 0;
+  std::size_t blocks = 0, known_voxels = 0, bytes = 0, reserved_bytes = 0;
   double bytes_per_known_voxel = 0.0;
 };
 

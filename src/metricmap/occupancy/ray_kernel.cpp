@@ -46,8 +46,11 @@ class Marker {
   explicit Marker(ScanUpdate& out) : out_(out) {}
 
   std::uint64_t* freeWords(std::int64_t bx, std::int64_t by, std::int64_t bz) {
+    return blockAt(bx, by, bz).free;
+  }
+  ScanBlock& blockAt(std::int64_t bx, std::int64_t by, std::int64_t bz) {
     if (bx != bx_ || by != by_ || bz != bz_) select(bx, by, bz);
-    return block_->free;
+    return *block_;
   }
   void markFree(std::int64_t x, std::int64_t y, std::int64_t z) {
     std::uint64_t* w = freeWords(x >> kBlockShift, y >> kBlockShift, z >> kBlockShift);
@@ -106,26 +109,6 @@ bool keyOf(const float p[3], double inv_res, Key3& key) {
   }
   return true;
 }
-
-/// Marks into dense per-block bits over the scan's bounding box (block-aligned origin).
-class DenseMarker {
- public:
-  DenseMarker(std::uint64_t* words, const std::int64_t lo[3], std::int64_t nbx, std::int64_t nby)
-      : words_(words), x0_(lo[0]), y0_(lo[1]), z0_(lo[2]), nbx_(nbx), nby_(nby) {}
-  void markFree(std::int64_t x, std::int64_t y, std::int64_t z) { set(x, y, z, 0); }
-  void markHit(std::int64_t x, std::int64_t y, std::int64_t z) { set(x, y, z, kBlockWords); }
-
- private:
-  void set(std::int64_t x, std::int64_t y, std::int64_t z, int offset) {
-    const std::int64_t lx = x - x0_, ly = y - y0_, lz = z - z0_;
-    const std::int64_t b =
-        ((lz >> kBlockShift) * nby_ + (ly >> kBlockShift)) * nbx_ + (lx >> kBlockShift);
-    const int i = voxelInBlock(lx, ly, lz);
-    words_[b * 2 * kBlockWords + offset + (i >> 6)] |= std::uint64_t{1} << (i & 63);
-  }
-  std::uint64_t* words_;
-  std::int64_t x0_, y0_, z0_, nbx_, nby_;
-};
 
 /// One beam being walked: OctoMap's computeRayKeys state (Amanatides & Woo in double from
 /// float coordinates). The crossing parameters live in SSE2 registers (low lane) so a step
@@ -193,6 +176,137 @@ inline void walkBeam(Beam b, Sink& sink) {
   }
 }
 
+/// A bit per voxel of the scan's box, x fastest, rows padded to 64 bits: a step moves the bit
+/// index by a fixed stride per axis, so marking costs no multiplication.
+struct LinearBits {
+  std::uint64_t* bits;
+  std::int64_t x0, y0, z0, row_bits, slice_bits;
+  std::int64_t index(std::int64_t x, std::int64_t y, std::int64_t z) const {
+    return (x - x0) + (y - y0) * row_bits + (z - z0) * slice_bits;
+  }
+  void set(std::int64_t i) { bits[i >> 6] |= std::uint64_t{1} << (i & 63); }
+};
+
+/// walkBeam's loop, marking into LinearBits.
+inline void walkBeamLinear(const Beam& b, LinearBits& free) {
+  __m128d tx = b.t[0], ty = b.t[1], tz = b.t[2];
+  const __m128d dx = b.dt[0], dy = b.dt[1], dz = b.dt[2], len = b.length;
+  std::int64_t kx = b.k[0], ky = b.k[1], kz = b.k[2];
+  const std::int64_t sx = b.step[0], sy = b.step[1], sz = b.step[2];
+  const std::int64_t ix = sx, iy = sy * free.row_bits, iz = sz * free.slice_bits;
+  const std::int64_t ex = b.ke[0], ey = b.ke[1], ez = b.ke[2];
+  std::int64_t idx = free.index(kx, ky, kz);
+  std::uint64_t* bits = free.bits;
+  const __m128d ones = _mm_castsi128_pd(_mm_set1_epi64x(-1));
+  for (;;) {
+    const __m128d x_lt_y = _mm_cmplt_sd(tx, ty);
+    const __m128d mx = _mm_and_pd(x_lt_y, _mm_cmplt_sd(tx, tz));
+    const __m128d my = _mm_andnot_pd(x_lt_y, _mm_cmplt_sd(ty, tz));
+    const __m128d mz = _mm_andnot_pd(_mm_or_pd(mx, my), ones);
+    tx = _mm_add_sd(tx, _mm_and_pd(mx, dx));
+    ty = _mm_add_sd(ty, _mm_and_pd(my, dy));
+    tz = _mm_add_sd(tz, _mm_and_pd(mz, dz));
+    const std::int64_t bx = maskBits(mx), by = maskBits(my), bz = maskBits(mz);
+    kx += sx & bx;
+    ky += sy & by;
+    kz += sz & bz;
+    idx += (ix & bx) + (iy & by) + (iz & bz);
+    if (((kx ^ ex) | (ky ^ ey) | (kz ^ ez)) == 0) return;
+    if (_mm_comigt_sd(_mm_min_sd(_mm_min_sd(tx, ty), tz), len)) return;
+    bits[idx >> 6] |= std::uint64_t{1} << (idx & 63);
+  }
+}
+
+/// walkBeamLinear's state, so that two beams can be stepped in one loop (their steps are
+/// independent, which hides the latency of each).
+struct LinearState {
+  __m128d tx, ty, tz, dx, dy, dz, len;
+  std::int64_t kx, ky, kz, sx, sy, sz, ix, iy, iz, ex, ey, ez, idx;
+};
+
+inline void initState(const Beam& b, const LinearBits& free, LinearState& s) {
+  s.tx = b.t[0];
+  s.ty = b.t[1];
+  s.tz = b.t[2];
+  s.dx = b.dt[0];
+  s.dy = b.dt[1];
+  s.dz = b.dt[2];
+  s.len = b.length;
+  s.kx = b.k[0];
+  s.ky = b.k[1];
+  s.kz = b.k[2];
+  s.sx = b.step[0];
+  s.sy = b.step[1];
+  s.sz = b.step[2];
+  s.ix = s.sx;
+  s.iy = s.sy * free.row_bits;
+  s.iz = s.sz * free.slice_bits;
+  s.ex = b.ke[0];
+  s.ey = b.ke[1];
+  s.ez = b.ke[2];
+  s.idx = free.index(s.kx, s.ky, s.kz);
+}
+
+/// One step of OctoMap's loop; marks the voxel and returns true, or false when the beam is done.
+inline bool stepState(LinearState& s, std::uint64_t* bits) {
+  const __m128d x_lt_y = _mm_cmplt_sd(s.tx, s.ty);
+  const __m128d mx = _mm_and_pd(x_lt_y, _mm_cmplt_sd(s.tx, s.tz));
+  const __m128d my = _mm_andnot_pd(x_lt_y, _mm_cmplt_sd(s.ty, s.tz));
+  const __m128d mz = _mm_andnot_pd(_mm_or_pd(mx, my), _mm_castsi128_pd(_mm_set1_epi64x(-1)));
+  s.tx = _mm_add_sd(s.tx, _mm_and_pd(mx, s.dx));
+  s.ty = _mm_add_sd(s.ty, _mm_and_pd(my, s.dy));
+  s.tz = _mm_add_sd(s.tz, _mm_and_pd(mz, s.dz));
+  const std::int64_t bx = maskBits(mx), by = maskBits(my), bz = maskBits(mz);
+  s.kx += s.sx & bx;
+  s.ky += s.sy & by;
+  s.kz += s.sz & bz;
+  s.idx += (s.ix & bx) + (s.iy & by) + (s.iz & bz);
+  if (((s.kx ^ s.ex) | (s.ky ^ s.ey) | (s.kz ^ s.ez)) == 0) return false;
+  if (_mm_comigt_sd(_mm_min_sd(_mm_min_sd(s.tx, s.ty), s.tz), s.len)) return false;
+  bits[s.idx >> 6] |= std::uint64_t{1} << (s.idx & 63);
+  return true;
+}
+
+/// Two beams at a time until one ends, then the other alone.
+inline void walkPair(const Beam& a, const Beam& b, LinearBits& free) {
+  LinearState sa, sb;
+  initState(a, free, sa);
+  initState(b, free, sb);
+  std::uint64_t* bits = free.bits;
+  bool ra = true, rb = true;
+  while (ra && rb) {
+    ra = stepState(sa, bits);
+    rb = stepState(sb, bits);
+  }
+  while (ra) ra = stepState(sa, bits);
+  while (rb) rb = stepState(sb, bits);
+}
+
+/// Moves the set bits of a LinearBits box into the scan's blocks (free or hit words), zeroing
+/// them: each byte of a word is one block row of 8 voxels.
+void harvest(LinearBits& box, std::int64_t words_per_row, std::int64_t rows_y, std::int64_t rows_z,
+             bool hit, Marker& marker) {
+  std::uint64_t* w = box.bits;
+  for (std::int64_t z = 0; z < rows_z; ++z) {
+    for (std::int64_t y = 0; y < rows_y; ++y) {
+      for (std::int64_t xw = 0; xw < words_per_row; ++xw, ++w) {
+        std::uint64_t word = *w;
+        if (word == 0) continue;
+        *w = 0;
+        const std::int64_t gx = box.x0 + xw * 64, gy = box.y0 + y, gz = box.z0 + z;
+        for (int byte = 0; byte < 8; ++byte, word >>= 8) {
+          const std::uint64_t row = word & 0xff;
+          if (row == 0) continue;
+          const std::int64_t vx = gx + byte * 8;  // box.x0 is a multiple of 8
+          ScanBlock& sb = marker.blockAt(vx >> kBlockShift, gy >> kBlockShift, gz >> kBlockShift);
+          std::uint64_t* dst = hit ? sb.hit : sb.free;
+          dst[gz & 7] |= row << ((gy & 7) * 8);
+        }
+      }
+    }
+  }
+}
+
 /// Walks every beam of the scan, marking the voxels from the origin's up to, not including,
 /// the end's as free and the end voxels of unclipped beams as hits.
 template <typename Sink>
@@ -207,7 +321,7 @@ void walkAll(const float o[3], const Key3& ko, const ScanUpdate& up, double res,
   }
 }
 
-constexpr std::int64_t kDenseBlockLimit = std::int64_t{1} << 20;  // 128 MiB of bits
+constexpr std::int64_t kDenseWordLimit = std::int64_t{1} << 23;  // 2 x 64 MiB of bits
 
 }  // namespace
 
@@ -262,34 +376,40 @@ RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
     }
     out.ends.push_back(end);
   }
-  std::int64_t nb[3];
+  // The box of the scan: x from a multiple of 64, rows padded to 64 bits. OctoMap's walk may
+  // step one voxel past an end voxel when a beam ends within rounding of a voxel edge (it then
+  // stops on the length test), so the box has a margin of 2 voxels on every side.
   for (int i = 0; i < 3; ++i) {
-    lo[i] = (lo[i] >> kBlockShift) << kBlockShift;
-    nb[i] = ((hi[i] - lo[i]) >> kBlockShift) + 1;
+    lo[i] -= 2;
+    hi[i] += 2;
   }
-  const std::int64_t dense_blocks = nb[0] * nb[1] * nb[2];
-  if (dense_blocks <= kDenseBlockLimit) {
-    const auto words = static_cast<std::size_t>(dense_blocks) * 2 * kBlockWords;
-    if (out.dense.size() < words) out.dense.assign(words, 0);
-    DenseMarker marker(out.dense.data(), lo, nb[0], nb[1]);
-    walkAll(o, ko, out, res, marker);
-    // harvest the touched blocks, zeroing the dense bits for the next scan
-    std::uint64_t* w = out.dense.data();
-    for (std::int64_t b = 0; b < dense_blocks; ++b, w += 2 * kBlockWords) {
-      std::uint64_t any = 0;
-      for (int j = 0; j < 2 * kBlockWords; ++j) any |= w[j];
-      if (any == 0) continue;
-      const std::int64_t bx = b % nb[0], by = (b / nb[0]) % nb[1], bz = b / (nb[0] * nb[1]);
-      out.blocks.emplace_back();
-      ScanBlock& sb = out.blocks.back();
-      std::memcpy(sb.free, w, sizeof(sb.free));
-      std::memcpy(sb.hit, w + kBlockWords, sizeof(sb.hit));
-      sb.key = packVoxelKey((lo[0] >> kBlockShift) + bx, (lo[1] >> kBlockShift) + by,
-                            (lo[2] >> kBlockShift) + bz);
-      std::memset(w, 0, 2 * kBlockWords * sizeof(std::uint64_t));
+  const std::int64_t x0 = (lo[0] >> 6) * 64;  // a multiple of 64 (and of 8)
+  const std::int64_t words_per_row = ((hi[0] - x0) >> 6) + 1;
+  const std::int64_t ny = hi[1] - lo[1] + 1, nz = hi[2] - lo[2] + 1;
+  Marker marker(out);
+  if (words_per_row * ny * nz <= kDenseWordLimit) {
+    const auto words = static_cast<std::size_t>(words_per_row * ny * nz);
+    if (out.dense.size() < 2 * words) out.dense.assign(2 * words, 0);
+    LinearBits free{out.dense.data(),       x0, lo[1], lo[2], words_per_row * 64,
+                    words_per_row * 64 * ny};
+    LinearBits hits = free;
+    hits.bits = out.dense.data() + words;
+    Beam beams[2];
+    int pending = 0;
+    for (const ScanUpdate::End& end : out.ends) {
+      if (end.hit) hits.set(hits.index(end.k[0], end.k[1], end.k[2]));
+      if (ko.v[0] == end.k[0] && ko.v[1] == end.k[1] && ko.v[2] == end.k[2]) continue;
+      free.set(free.index(ko.v[0], ko.v[1], ko.v[2]));
+      startBeam(o, end.e, ko, end.k, res, beams[pending++]);
+      if (pending == 2) {
+        walkPair(beams[0], beams[1], free);
+        pending = 0;
+      }
     }
+    if (pending == 1) walkBeamLinear(beams[0], free);
+    harvest(free, words_per_row, ny, nz, false, marker);
+    harvest(hits, words_per_row, ny, nz, true, marker);
   } else {
-    Marker marker(out);
     walkAll(o, ko, out, res, marker);
   }
   return counts;

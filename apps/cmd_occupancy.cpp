@@ -1,0 +1,290 @@
+// metricmap occupancy INPUT...: KITTI scans or PCD files (VIEWPOINT = sensor pose) cast into a
+// probabilistic voxel map (LogOddsMap), written as OctoMap .bt/.ot, occupied voxel centres and
+// a trinary map_server map from a height band. A .bt/.ot INPUT is read and exported instead.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <pcl/common/transforms.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_common.h"
+#include "commands.h"
+#include "metricmap/exceptions.h"
+#include "metricmap/io/cloud_reader.h"
+#include "metricmap/io/cloud_writer.h"
+#include "metricmap/kitti/kitti_sequence.h"
+#include "metricmap/occupancy/occupancy_export.h"
+#include "metricmap/occupancy/octomap_io.h"
+#include "table.h"
+
+namespace metricmap::cli {
+namespace {
+
+using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
+
+struct OccupancyOptions {
+  std::vector<std::string> inputs;
+  std::string sequence = "00", frames, world = "velodyne";
+  std::string out_bt, out_ot, out_cloud, out_map, map_preview, band, format = "table";
+  std::string pcd_format = "binary";
+  double resolution = kUnset, max_range = kUnset;
+  bool resolution_given = false, max_range_given = false;
+};
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+bool isDirectory(const std::string& path) {
+  return access((path + "/sequences").c_str(), F_OK) == 0;
+}
+
+/// "zmin,zmax" -> two finite numbers, zmin <= zmax.
+std::pair<double, double> parseBand(const std::string& text) {
+  const std::size_t comma = text.find(',');
+  try {
+    if (comma == std::string::npos) throw std::invalid_argument("");
+    std::size_t used = 0;
+    const std::string a = text.substr(0, comma), b = text.substr(comma + 1);
+    const double lo = std::stod(a, &used);
+    if (used != a.size()) throw std::invalid_argument("");
+    const double hi = std::stod(b, &used);
+    if (used != b.size() || !std::isfinite(lo) || !std::isfinite(hi) || lo > hi)
+      throw std::invalid_argument("");
+    return {lo, hi};
+  } catch (const std::exception&) {
+    throw std::invalid_argument("--band must be zmin,zmax (finite, zmin <= zmax), got '" + text +
+                                "'");
+  }
+}
+
+/// A PCD's header must declare its sensor pose: the beams start there.
+void requireViewpoint(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for (int i = 0; i < 32 && std::getline(in, line); ++i) {
+    if (line.rfind("VIEWPOINT", 0) == 0) return;
+    if (line.rfind("DATA", 0) == 0) break;
+  }
+  throw InputError(path + ": no VIEWPOINT line: the sensor pose (origin of the beams) is unknown");
+}
+
+/// liboctomap reports its progress on stderr (" done.", "Reading binary octree ..."); the
+/// command's stderr is for its own one-line errors, so stderr is muted while liboctomap runs.
+class MuteStderr {
+ public:
+  MuteStderr() {
+    std::fflush(stderr);
+    std::cerr.flush();
+    saved_ = dup(STDERR_FILENO);
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (saved_ >= 0 && null >= 0) dup2(null, STDERR_FILENO);
+    if (null >= 0) ::close(null);
+  }
+  ~MuteStderr() {
+    std::fflush(stderr);
+    std::cerr.flush();
+    if (saved_ >= 0) {
+      dup2(saved_, STDERR_FILENO);
+      ::close(saved_);
+    }
+  }
+  MuteStderr(const MuteStderr&) = delete;
+  MuteStderr& operator=(const MuteStderr&) = delete;
+
+ private:
+  int saved_ = -1;
+};
+
+LogOddsMap readMap(const std::string& path) {
+  MuteStderr mute;
+  return readOctomap(path);
+}
+
+void writeMap(const LogOddsMap& map, const std::string& path) {
+  MuteStderr mute;
+  writeOctomap(map, path);
+}
+
+struct Totals {
+  std::size_t frames = 0, points = 0, beams = 0, cut = 0, non_finite = 0;
+  double load_s = 0, insert_s = 0, write_s = 0;
+};
+
+void castScans(const OccupancyOptions& o, LogOddsMap& map, Totals& tot) {
+  const bool progress = isatty(STDERR_FILENO) != 0;
+  const auto t_start = std::chrono::steady_clock::now();
+  auto insert = [&](const Cloud& cloud, const Eigen::Vector3f* origin, std::size_t dropped) {
+    const auto t = std::chrono::steady_clock::now();
+    const ScanInsertReport r = origin ? map.insertScan(cloud, *origin) : map.insertScan(cloud);
+    tot.insert_s += secondsSince(t);
+    ++tot.frames;
+    tot.points += r.points + dropped;
+    tot.beams += r.beams;
+    tot.cut += r.beams_cut;
+    tot.non_finite += r.non_finite + dropped;
+  };
+  auto report = [&](std::size_t done, std::size_t total) {
+    if (!progress) return;
+    const double elapsed = secondsSince(t_start);
+    std::fprintf(stderr, "\rscan %zu/%zu  %.0f ms/scan  %.0f s left   ", done, total,
+                 1000.0 * tot.insert_s / static_cast<double>(done),
+                 elapsed / static_cast<double>(done) * static_cast<double>(total - done));
+  };
+  if (o.inputs.size() == 1 && isDirectory(o.inputs[0])) {
+    if (o.frames.empty()) throw CLI::ValidationError("frames", "a KITTI root needs --frames");
+    const std::vector<std::size_t> frames = parseFrameList(o.frames);
+    const KittiSequence seq{o.inputs[0], o.sequence};
+    for (std::size_t f : frames) {
+      if (access(seq.scan(f).c_str(), R_OK) != 0) throw InputError(seq.scan(f) + ": missing frame");
+    }
+    const Eigen::Isometry3d tr = readKittiCalibTr(seq.calib());
+    const auto poses =
+        readKittiPoses(seq.poses(), *std::max_element(frames.begin(), frames.end()) + 1);
+    const KittiWorld world = o.world == "camera" ? KittiWorld::Camera : KittiWorld::Velodyne;
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+      auto t = std::chrono::steady_clock::now();
+      Cloud scan, world_scan;
+      const LoadReport lr = loadCloud(seq.scan(frames[k]), scan);
+      const Eigen::Isometry3d to_world = kittiScanToWorld(poses[frames[k]], tr, world);
+      pcl::transformPointCloud(scan, world_scan, to_world.matrix().cast<float>());
+      tot.load_s += secondsSince(t);
+      const Eigen::Vector3f origin = to_world.translation().cast<float>();
+      insert(world_scan, &origin, lr.nonfinite_dropped);
+      report(k + 1, frames.size());
+    }
+  } else {
+    for (const std::string& path : o.inputs) {
+      if (!endsWith(path, ".pcd") && !endsWith(path, ".PCD"))
+        throw InputError(path +
+                         ": scans must be PCD files (VIEWPOINT = sensor pose) or one "
+                         "KITTI root");
+    }
+    for (std::size_t k = 0; k < o.inputs.size(); ++k) {
+      auto t = std::chrono::steady_clock::now();
+      requireViewpoint(o.inputs[k]);
+      Cloud scan;
+      const LoadReport lr = loadCloud(o.inputs[k], scan);
+      tot.load_s += secondsSince(t);
+      insert(scan, nullptr, lr.nonfinite_dropped);
+      report(k + 1, o.inputs.size());
+    }
+  }
+  if (progress) std::fprintf(stderr, "\n");
+}
+
+void run(const OccupancyOptions& o) {
+  const bool from_file =
+      o.inputs.size() == 1 && (endsWith(o.inputs[0], ".bt") || endsWith(o.inputs[0], ".ot"));
+  if (!o.out_map.empty() && o.band.empty())
+    throw CLI::ValidationError("band", "--out-map needs --band zmin,zmax");
+  if (!o.out_map.empty() && o.world == "camera")
+    throw CLI::ValidationError("world",
+                               "the --band is along z: use --world velodyne for --out-map");
+  std::pair<double, double> band{0, 0};
+  if (!o.band.empty()) band = parseBand(o.band);
+  Totals tot;
+  LogOddsParams params;
+  if (!from_file) {
+    if (!o.resolution_given || !o.max_range_given)
+      throw CLI::ValidationError("resolution", "scans need --resolution and --max-range");
+    params.resolution = o.resolution;
+    params.max_range = o.max_range;
+  }
+  validateLogOddsParams(params);
+  auto t = std::chrono::steady_clock::now();
+  LogOddsMap map = from_file ? readMap(o.inputs[0]) : LogOddsMap(params);
+  if (from_file) tot.load_s = secondsSince(t);
+  if (!from_file) castScans(o, map, tot);
+
+  // everything that can fail on the data is computed before the first file is written
+  t = std::chrono::steady_clock::now();
+  TrinaryMap trinary;
+  if (!o.out_map.empty()) trinary = projectBand(map, band.first, band.second);
+  if (!o.out_bt.empty()) writeMap(map, o.out_bt);
+  if (!o.out_ot.empty()) writeMap(map, o.out_ot);
+  if (!o.out_cloud.empty())
+    savePcdAtomic(o.out_cloud, occupiedCenters(map), parsePcdFormat(o.pcd_format));
+  if (!o.out_map.empty()) writeTrinaryMapServer(trinary, o.out_map, o.map_preview);
+  tot.write_s = secondsSince(t);
+
+  const LogOddsMemory mem = map.memory();
+  const std::size_t occupied = map.occupiedVoxels();
+  const double ms_per_scan =
+      tot.frames == 0 ? 0.0 : 1000.0 * tot.insert_s / static_cast<double>(tot.frames);
+  if (o.format == "json") {
+    nlohmann::json j;
+    j["frames"] = tot.frames;
+    j["points"] = tot.points;
+    j["non_finite"] = tot.non_finite;
+    j["beams"] = tot.beams;
+    j["beams_cut"] = tot.cut;
+    j["resolution"] = map.resolution();
+    j["voxels"] = {{"known", map.knownVoxels()},
+                   {"occupied", occupied},
+                   {"free", map.knownVoxels() - occupied}};
+    j["bytes"] = mem.bytes;
+    j["bytes_per_known_voxel"] = mem.bytes_per_known_voxel;
+    j["seconds"] = {{"load", tot.load_s}, {"insert", tot.insert_s}, {"write", tot.write_s}};
+    j["ms_per_scan"] = ms_per_scan;
+    if (!o.out_map.empty())
+      j["map"] = {{"width", trinary.width},
+                  {"height", trinary.height},
+                  {"occupied", trinary.occupied},
+                  {"free", trinary.free}};
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  Table tab(
+      {"frames", "beams", "beams_cut", "known", "occupied", "free", "bytes/voxel", "ms/scan"});
+  char bpv[32], ms[32];
+  std::snprintf(bpv, sizeof bpv, "%.1f", mem.bytes_per_known_voxel);
+  std::snprintf(ms, sizeof ms, "%.1f", ms_per_scan);
+  tab.addRow({std::to_string(tot.frames), std::to_string(tot.beams), std::to_string(tot.cut),
+              std::to_string(map.knownVoxels()), std::to_string(occupied),
+              std::to_string(map.knownVoxels() - occupied), bpv, ms});
+  emitTable(tab, "table");
+}
+
+}  // namespace
+
+void addOccupancyCommand(CLI::App& app) {
+  auto o = std::make_shared<OccupancyOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "occupancy", "Ray-cast scans into a log-odds voxel map; OctoMap .bt/.ot, 2D trinary map");
+  sub->add_option("input", o->inputs,
+                  "A KITTI root (with --frames), PCD files (VIEWPOINT = sensor pose), or one "
+                  ".bt/.ot map to export")
+      ->required();
+  sub->add_option("--resolution", o->resolution, "Voxel edge (m), > 0");
+  sub->add_option("--max-range", o->max_range, "Beams are cut here and mark no hit (m), > 0");
+  sub->add_option("--sequence", o->sequence, "KITTI sequence")->capture_default_str();
+  sub->add_option("--frames", o->frames, "KITTI frames, e.g. 0-5,15");
+  sub->add_option("--world", o->world, "KITTI world: velodyne (z up) or camera (y down)")
+      ->check(CLI::IsMember({"camera", "velodyne"}))
+      ->capture_default_str();
+  sub->add_option("--out", o->out_bt, "Write OctoMap .bt (maximum likelihood)");
+  sub->add_option("--out-ot", o->out_ot, "Write OctoMap .ot (log-odds)");
+  sub->add_option("--out-cloud", o->out_cloud, "Write the occupied voxel centres (.pcd)");
+  sub->add_option("--out-map", o->out_map, "Write a trinary map_server map (.pgm + .yaml)");
+  sub->add_option("--band", o->band, "Height band of --out-map: zmin,zmax (m)");
+  sub->add_option("--map-preview", o->map_preview, "Also write --out-map as PNG");
+  addPcdFormatOption(*sub, o->pcd_format);
+  addFormatOption(*sub, o->format, {"table", "json"});
+  sub->callback([o, sub] {
+    OccupancyOptions opts = *o;
+    opts.resolution_given = sub->count("--resolution") > 0;
+    opts.max_range_given = sub->count("--max-range") > 0;
+    run(opts);
+  });
+}
+
+}  // namespace metricmap::cli

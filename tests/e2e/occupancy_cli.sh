@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# metricmap occupancy: outputs of a real run, then bad input (one line, exit 1, no file left).
+MM=$1
+DATA=$2
+source "$(dirname "$0")/lib.sh"
+kitti=$DATA/kitti_odometry_00
+out=$tmp/o
+mkdir -p "$out"
+
+"$MM" occupancy "$kitti" --frames 0-1 --resolution 0.2 --max-range 50 --out "$out/m.bt" \
+  --out-ot "$out/m.ot" --out-cloud "$out/occ.pcd" --out-map "$out/m.pgm" --band -1.5,0.5 \
+  --format json >"$out/run.json" 2>"$out/run.err"
+check "run succeeds quietly" test ! -s "$out/run.err"
+for f in m.bt m.ot occ.pcd m.pgm m.yaml; do check "$f written" test -s "$out/$f"; done
+check "json frames" grep -q '"frames": 2' "$out/run.json"
+check "json beams" grep -q '"beams": 249273' "$out/run.json"
+check "yaml trinary" grep -q 'mode: trinary' "$out/m.yaml"
+check "pgm header" grep -qa '^P5' "$out/m.pgm"
+# the .bt read back: the same occupied voxels as the scans gave
+occ=$(grep -o '"occupied": [0-9]*' "$out/run.json" | tail -1)
+"$MM" occupancy "$out/m.bt" --format json >"$out/back.json" 2>"$out/back.err"
+check "bt read back: $occ" grep -q "$occ" "$out/back.json"
+check "bt read quietly" test ! -s "$out/back.err"
+
+# bad input: exit 1, one line, nothing written
+for r in 0 -0.2 nan; do
+  expect 1 "resolution must be" -- "$MM" occupancy "$kitti" --frames 0 --resolution "$r" \
+    --max-range 50 --out "$out/bad.bt"
+done
+for m in 0 -1 nan; do
+  expect 1 "max_range must be" -- "$MM" occupancy "$kitti" --frames 0 --resolution 0.2 \
+    --max-range "$m" --out "$out/bad.bt"
+done
+head -c 60000 "$out/m.bt" >"$out/trunc.bt"
+expect 1 "trunc.bt: truncated" -- "$MM" occupancy "$out/trunc.bt" --out "$out/bad.bt"
+head -c 90 "$out/m.ot" >"$out/trunc.ot"
+expect 1 "trunc.ot" -- "$MM" occupancy "$out/trunc.ot" --out "$out/bad.bt"
+printf 'hello\n' >"$out/junk.bt"
+expect 1 "not an OctoMap file" -- "$MM" occupancy "$out/junk.bt" --out "$out/bad.bt"
+sed '/^VIEWPOINT/d' "$DATA/ua_mapas_metricos_pcd/museo000.pcd" >"$out/noview.pcd"
+expect 1 "noview.pcd: no VIEWPOINT" -- "$MM" occupancy "$out/noview.pcd" --resolution 0.2 \
+  --max-range 10 --out "$out/bad.bt"
+expect 1 "000000.bin: scans must be PCD" -- "$MM" occupancy "$kitti/sequences/00/velodyne/000000.bin" \
+  --resolution 0.2 --max-range 10 --out "$out/bad.bt"
+expect 1 "height band" -- "$MM" occupancy "$kitti" --frames 0 --resolution 0.2 --max-range 50 \
+  --out "$out/bad.bt" --out-map "$out/bad.pgm" --band 100,200
+expect 1 "--band must be" -- "$MM" occupancy "$kitti" --frames 0 --resolution 0.2 --max-range 50 \
+  --out-map "$out/bad.pgm" --band 1
+expect 2 "--resolution and --max-range" -- "$MM" occupancy "$kitti" --frames 0 --resolution 0.2
+check "no partial or stray file" test -z "$(ls "$out" | grep -E 'bad|tmp-')"
+finish
