@@ -138,4 +138,6 @@ check "no screenshot without a display" test ! -e "$tmp/v.png"
 expect 1 "$tmp/nodir/means.pcd" -- "$MM" grid "$scan" --cell-size 1 --out "$tmp/nodir/means.pcd"
 expect 1 "$tmp/nodir/cells.csv" -- "$MM" grid "$scan" --cell-size 1 --cells "$tmp/nodir/cells.csv"
 check "no temporary files left" test -z "$(find "$tmp" -name '*.tmp-*')"
+
+source "$(dirname "$0")/cli_hardening_cases.sh"
 finish
