@@ -154,7 +154,16 @@ void run(const HeightMapOptions& o) {
               "--map-size " + std::to_string(o.map_size) + " with " +
                   std::to_string(params.z_bins.size() + 1) + " height bins");
   params.obstacle_threshold = static_cast<std::uint32_t>(o.obstacle_threshold);
-  HeightMap map(params);  // checks sizes and bins before any file is read
+  // The map checks sizes and bins before any file is read; a bad option is a usage error.
+  std::unique_ptr<HeightMap> map_holder;
+  try {
+    map_holder = std::make_unique<HeightMap>(params);
+  } catch (const CapacityError&) {
+    throw;
+  } catch (const std::invalid_argument& e) {
+    throw CLI::ValidationError("--z-bins/--resolution/--map-size", e.what());
+  }
+  HeightMap& map = *map_holder;
 
   std::vector<Eigen::Isometry3d> trajectory;
   if (!o.trajectory.empty()) trajectory = readTrajectory(o.trajectory, o.depths.size());
