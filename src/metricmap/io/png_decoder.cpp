@@ -116,7 +116,8 @@ DecodedImage decodePng(const std::string& path, ImageWant want) {
     throw InputError(path + ": declares " + dims + " pixels, more than its " +
                      std::to_string(file_size) + " bytes can hold");
   }
-  checkMemory(static_cast<std::uint64_t>(h.height), h.row_bytes + sizeof(png_bytep),
+  // the decoded rows, then the copy handed out
+  checkMemory(static_cast<std::uint64_t>(h.height), 2 * h.row_bytes + sizeof(png_bytep),
               path + " (" + dims + " pixels)");
 
   std::vector<png_byte> pixels(h.row_bytes * h.height);
