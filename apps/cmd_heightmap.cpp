@@ -16,6 +16,7 @@
 #include "metricmap/height/floor_fit.h"
 #include "metricmap/height/height_map.h"
 #include "metricmap/io/array_writers.h"
+#include "metricmap/io/input_file.h"
 #include "metricmap/io/output_set.h"
 #include "table.h"
 
@@ -57,6 +58,7 @@ Eigen::Isometry3d poseFromMatrix(const std::string& text) {
 
 /// TUM trajectory: "timestamp tx ty tz qx qy qz qw", camera -> world; frame k takes line k.
 std::vector<Eigen::Isometry3d> readTrajectory(const std::string& path, std::size_t frames) {
+  requireRegularFile(path);
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open");
   std::vector<Eigen::Isometry3d> poses;

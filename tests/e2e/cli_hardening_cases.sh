@@ -86,3 +86,10 @@ if [ -w /dev/full ]; then
   check "stdout on a full disk: exit 1 with a message" test "$rc" = 1 -a "$(grep -c 'standard output' "$tmp/full.err")" = 1
 fi
 check "no temporary files left" test -z "$(find "$tmp" -name '*.tmp-*')"
+
+# Inputs that are not regular files: never opened (a FIFO would block), one clear line.
+mkfifo "$tmp/in.pcd" "$tmp/in.png" "$tmp/in.csv"
+expect 1 "a FIFO" -- "$MM" info "$tmp/in.pcd"
+expect 1 "a FIFO" -- "$MM" depth-to-cloud "$tmp/in.png" "${tin[@]}" --out "$tmp/o.pcd"
+expect 1 "a FIFO" -- "$MM" lines "$tmp/in.csv"
+expect 1 "a directory" -- "$MM" lines "$tmp"

@@ -10,6 +10,7 @@
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/image_decoders.h"
+#include "metricmap/io/input_file.h"
 
 namespace metricmap {
 namespace detail {
@@ -85,6 +86,7 @@ bool readRows(PngReader& r, png_bytepp rows) {
 }  // namespace
 
 DecodedImage decodePng(const std::string& path, ImageWant want) {
+  requireRegularFile(path);
   PngReader r;
   r.file = std::fopen(path.c_str(), "rb");
   if (r.file == nullptr) throw InputError(path + ": cannot open");
