@@ -93,3 +93,8 @@ expect 1 "a FIFO" -- "$MM" info "$tmp/in.pcd"
 expect 1 "a FIFO" -- "$MM" depth-to-cloud "$tmp/in.png" "${tin[@]}" --out "$tmp/o.pcd"
 expect 1 "a FIFO" -- "$MM" lines "$tmp/in.csv"
 expect 1 "a directory" -- "$MM" lines "$tmp"
+
+# compare --config: values beyond float range or in other notations are usage errors.
+for v in 1e300 0x1 inf; do
+  expect 2 "cell_size" -- "$MM" compare "$scan" --config cell_size=$v,min_cell_size=1,max_points=3
+done
