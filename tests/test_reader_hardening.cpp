@@ -22,9 +22,19 @@ namespace {
 namespace fs = std::filesystem;
 const std::string kRegress = std::string(METRICMAP_SOURCE_DIR) + "/tests/fuzz_regressions/";
 
+/// Files written by these tests live in one directory, removed when the test binary exits.
+struct ScratchDir {
+  fs::path path = fs::temp_directory_path() / ("metricmap_hard_" + std::to_string(::getpid()));
+  ScratchDir() { fs::create_directories(path); }
+  ~ScratchDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+const ScratchDir kScratch;
+
 std::string writeTemp(const std::string& name, const std::string& text) {
-  const fs::path p =
-      fs::temp_directory_path() / ("metricmap_hard_" + std::to_string(::getpid()) + "_" + name);
+  const fs::path p = kScratch.path / name;
   std::ofstream(p, std::ios::binary) << text;
   return p.string();
 }
@@ -54,7 +64,6 @@ TEST(ReaderHardening, CarmenBeamCountsMustBeSmallIntegers) {
     const std::string p = writeTemp("bad.log", std::string("FLASER ") + n + " 1 2 3\n");
     EXPECT_THROW(readCarmenLog(p), InputError) << n;
   }
-  fs::remove(ok);
 }
 
 TEST(ReaderHardening, PlyAndPcdLayoutsPclCannotTake) {
@@ -72,8 +81,6 @@ TEST(ReaderHardening, PlyAndPcdLayoutsPclCannotTake) {
   fs::create_directories(dir);
   EXPECT_NE(inputErrorOf([&] { loadCloud(dir.string(), cloud); }).find("not a regular file"),
             std::string::npos);
-  fs::remove(dir);
-  fs::remove(empty_bin);
   // hex and beyond-float values in an ascii body are not numbers PCL reads as we do
   const std::string hdr =
       "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1\nHEIGHT 1\n"
