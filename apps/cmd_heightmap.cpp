@@ -16,6 +16,7 @@
 #include "metricmap/height/floor_fit.h"
 #include "metricmap/height/height_map.h"
 #include "metricmap/io/array_writers.h"
+#include "metricmap/io/input_file.h"
 #include "metricmap/io/output_set.h"
 #include "table.h"
 
@@ -57,6 +58,7 @@ Eigen::Isometry3d poseFromMatrix(const std::string& text) {
 
 /// TUM trajectory: "timestamp tx ty tz qx qy qz qw", camera -> world; frame k takes line k.
 std::vector<Eigen::Isometry3d> readTrajectory(const std::string& path, std::size_t frames) {
+  requireRegularFile(path);
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open");
   std::vector<Eigen::Isometry3d> poses;
@@ -154,7 +156,16 @@ void run(const HeightMapOptions& o) {
               "--map-size " + std::to_string(o.map_size) + " with " +
                   std::to_string(params.z_bins.size() + 1) + " height bins");
   params.obstacle_threshold = static_cast<std::uint32_t>(o.obstacle_threshold);
-  HeightMap map(params);  // checks sizes and bins before any file is read
+  // The map checks sizes and bins before any file is read; a bad option is a usage error.
+  std::unique_ptr<HeightMap> map_holder;
+  try {
+    map_holder = std::make_unique<HeightMap>(params);
+  } catch (const CapacityError&) {
+    throw;
+  } catch (const std::invalid_argument& e) {
+    throw CLI::ValidationError("--z-bins/--resolution/--map-size", e.what());
+  }
+  HeightMap& map = *map_holder;
 
   std::vector<Eigen::Isometry3d> trajectory;
   if (!o.trajectory.empty()) trajectory = readTrajectory(o.trajectory, o.depths.size());

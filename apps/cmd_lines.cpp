@@ -42,6 +42,13 @@ constexpr double kDeg = M_PI / 180.0;
 ScanLog readLog(const LinesOptions& o) {
   const bool csv = o.file.size() > 4 && o.file.compare(o.file.size() - 4, 4, ".csv") == 0;
   ScanLog log;
+  if (o.generic && o.preset.empty()) {
+    try {
+      validateScanLineFormat(o.scan_format);  // option values: a usage error
+    } catch (const std::invalid_argument& e) {
+      throw CLI::ValidationError("scan format", e.what());
+    }
+  }
   if (!o.preset.empty() || o.generic) {
     log = readScanLines(o.file, o.preset.empty() ? o.scan_format : urg04lxMinesFormat());
   } else if (csv) {

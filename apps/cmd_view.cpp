@@ -14,6 +14,7 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/grid/occupancy_grid.h"
 #include "metricmap/io/cloud_reader.h"
+#include "metricmap/io/input_file.h"
 #include "metricmap/io/laser_scan.h"
 #include "metricmap/octree/adaptive_octree.h"
 #include "view_scene.h"
@@ -60,10 +61,16 @@ void loadScanLog(const std::string& f, const ViewOptions& o, CloudRGB& out) {
 
 /// Segments of scan --scan from `metricmap lines --format json`.
 std::vector<DrawnSegment> readSegments(const std::string& path, long long scan) {
+  requireRegularFile(path);
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open");
   try {
-    const nlohmann::json j = nlohmann::json::parse(in);
+    // Deep nesting is refused while parsing (nlohmann's parser and destructor recurse).
+    const nlohmann::json j =
+        nlohmann::json::parse(in, [](int depth, nlohmann::json::parse_event_t, nlohmann::json&) {
+          if (depth > 32) throw std::invalid_argument("nested deeper than 32 levels");
+          return true;
+        });
     for (const auto& s : j.at("scans")) {
       if (s.at("scan").get<long long>() != scan) continue;
       std::vector<DrawnSegment> out;

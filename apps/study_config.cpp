@@ -1,26 +1,35 @@
 #include "study_config.h"
 
 #include <cmath>
-#include <cstdlib>
+#include <limits>
 #include <sstream>
+#include <stdexcept>
+
+#include "metricmap/common/parse_number.h"
 
 namespace metricmap::cli {
 namespace {
 
+/// Through the checked parser; a value beyond float range is refused before the cast (UB).
 bool parsePositive(const std::string& s, float& v) {
-  char* end = nullptr;
-  const double d = std::strtod(s.c_str(), &end);
-  if (s.empty() || *end != '\0' || !std::isfinite(d) || !(d > 0.0)) return false;
+  double d = 0.0;
+  try {
+    d = parseFiniteDouble(s, "value");
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
+  if (!(d > 0.0) || d > static_cast<double>(std::numeric_limits<float>::max())) return false;
   v = static_cast<float>(d);
-  return v > 0.0f && std::isfinite(v);
+  return v > 0.0f;
 }
 
 bool parseCount(const std::string& s, std::size_t& v) {
   if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos) return false;
-  char* end = nullptr;
-  const unsigned long long n = std::strtoull(s.c_str(), &end, 10);
-  if (*end != '\0' || n > 0xFFFFFFFFull) return false;
-  v = static_cast<std::size_t>(n);
+  try {
+    v = static_cast<std::size_t>(parseInteger(s, "value", 0, 0xFFFFFFFFll));
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
   return true;
 }
 

@@ -10,6 +10,7 @@
 
 #include <pcl/console/print.h>
 
+#include "metricmap/common/memory_budget.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/grid/occupancy_grid.h"
 #include "metricmap/io/cloud_reader.h"
@@ -20,6 +21,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const bool quiet = [] {
     pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+    metricmap::setMemoryBudget(256u << 20);  // declared sizes above it are CapacityErrors
     return true;
   }();
   (void)quiet;

@@ -71,7 +71,7 @@ expect 2 "--angle-threshold-deg" -- "$MM" lines "$mines" --preset urg04lx-mines 
 expect 2 "--angle-threshold-deg" -- "$MM" lines "$mines" --preset urg04lx-mines --angle-threshold-deg nan
 expect 2 "--max-gap" -- "$MM" lines "$mines" --preset urg04lx-mines --max-gap inf
 expect 2 "--chi2" -- "$MM" lines "$mines" --preset urg04lx-mines --chi2 0
-expect 1 "--max-range" -- "$MM" lines "$mines" --count 10 --min-range 2 --max-range 1
+expect 2 "--max-range" -- "$MM" lines "$mines" --count 10 --min-range 2 --max-range 1
 expect 2 "--min-points" -- "$MM" lines "$mines" --preset urg04lx-mines --min-points -2
 expect 2 "--svg" -- "$MM" lines "$mines" --preset urg04lx-mines --all --svg "$tmp/x.svg"
 expect 2 "--preset" -- "$MM" lines "$mines" --preset sick
@@ -92,7 +92,7 @@ expect 1 "$tmp/missing.png" -- "$MM" depth-to-cloud "$tmp/missing.png" --camera 
 hm=(--resolution 0.05 --map-size 100 --z-bins 0.1,1.0 --out-prefix "$tmp/hm")
 expect 2 "--map-size" -- "$MM" heightmap "$kd" --camera "$kx" --auto-floor --resolution 0.05 --map-size 0 --z-bins 0.1,1 --out-prefix "$tmp/hm"
 expect 1 "MiB" -- "$MM" heightmap "$kd" --camera "$kx" --auto-floor --resolution 0.05 --map-size 200000 --z-bins 0.1,1 --out-prefix "$tmp/hm"
-expect 1 "strictly increasing" -- "$MM" heightmap "$kd" --camera "$kx" --auto-floor --resolution 0.05 --map-size 100 --z-bins 1,0.1 --out-prefix "$tmp/hm"
+expect 2 "strictly increasing" -- "$MM" heightmap "$kd" --camera "$kx" --auto-floor --resolution 0.05 --map-size 100 --z-bins 1,0.1 --out-prefix "$tmp/hm"
 expect 2 "exactly one" -- "$MM" heightmap "$kd" --camera "$kx" "${hm[@]}"
 expect 2 "exactly one" -- "$MM" heightmap "$kd" --camera "$kx" --auto-floor --camera-height 1 "${hm[@]}"
 printf '1.0 0 0 0 0 0 0 1\n' >"$tmp/traj.txt"
@@ -138,4 +138,6 @@ check "no screenshot without a display" test ! -e "$tmp/v.png"
 expect 1 "$tmp/nodir/means.pcd" -- "$MM" grid "$scan" --cell-size 1 --out "$tmp/nodir/means.pcd"
 expect 1 "$tmp/nodir/cells.csv" -- "$MM" grid "$scan" --cell-size 1 --cells "$tmp/nodir/cells.csv"
 check "no temporary files left" test -z "$(find "$tmp" -name '*.tmp-*')"
+
+source "$(dirname "$0")/cli_hardening_cases.sh"
 finish

@@ -11,6 +11,7 @@
 #include <pcl/io/ply_io.h>
 
 #include "metricmap/exceptions.h"
+#include "metricmap/io/input_file.h"
 #include "metricmap/io/kitti_bin.h"
 #include "metricmap/io/pcd_reader.h"
 #include "metricmap/io/ply_check.h"
@@ -76,6 +77,7 @@ template <typename PointT>
 LoadReport loadCloud(const std::string& path, pcl::PointCloud<PointT>& cloud) {
   LoadReport report;
   report.path = path;
+  requireRegularFile(path);
   pcl::PCLPointCloud2 blob;
   const std::string ext = lowerExtension(path);
   if (ext == "pcd") {

@@ -8,6 +8,7 @@
 
 #include "metricmap/common/parse_number.h"
 #include "metricmap/exceptions.h"
+#include "metricmap/io/input_file.h"
 
 namespace metricmap {
 namespace {
@@ -16,6 +17,7 @@ constexpr double kDeg = M_PI / 180.0;
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::ifstream openText(const std::string& path) {
+  requireRegularFile(path);
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open");
   return in;
@@ -180,6 +182,7 @@ ScanLog readScanLines(const std::string& path, const ScanLineFormat& f) {
 }
 
 bool looksLikeCarmen(const std::string& path) {
+  requireRegularFile(path);
   std::ifstream in(path);
   std::string line;
   for (int n = 0; n < 200 && std::getline(in, line); ++n) {

@@ -1,12 +1,16 @@
 #include "metricmap/io/pcd_header.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
+#include "metricmap/common/parse_number.h"
 #include "metricmap/exceptions.h"
 
 namespace metricmap {
@@ -35,10 +39,18 @@ std::uint64_t parseCount(const std::string& path, const std::string& key, const 
   return v;
 }
 
+/// A value PCL's ascii decoder reads as we do: "nan"/"inf" (any case, signed inf), or a finite
+/// decimal number within float range (PCL falls back to atof and casts: hex would read as 0 and
+/// 1e39 as an out-of-range float cast).
 bool isNumber(const std::string& s) {
-  char* end = nullptr;
-  std::strtod(s.c_str(), &end);
-  return end != s.c_str() && *end == '\0';
+  std::string lower;
+  for (char c : s) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower == "nan" || lower == "inf" || lower == "-inf" || lower == "+inf") return true;
+  try {
+    return std::fabs(parseFiniteDouble(s, "value")) <= std::numeric_limits<float>::max();
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
 }
 
 void parseHeader(const std::string& path, std::istream& in, PcdHeader& h) {

@@ -10,6 +10,7 @@
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/image_decoders.h"
+#include "metricmap/io/input_file.h"
 
 namespace metricmap {
 namespace detail {
@@ -85,6 +86,7 @@ bool readRows(PngReader& r, png_bytepp rows) {
 }  // namespace
 
 DecodedImage decodePng(const std::string& path, ImageWant want) {
+  requireRegularFile(path);
   PngReader r;
   r.file = std::fopen(path.c_str(), "rb");
   if (r.file == nullptr) throw InputError(path + ": cannot open");
@@ -116,7 +118,8 @@ DecodedImage decodePng(const std::string& path, ImageWant want) {
     throw InputError(path + ": declares " + dims + " pixels, more than its " +
                      std::to_string(file_size) + " bytes can hold");
   }
-  checkMemory(static_cast<std::uint64_t>(h.height), h.row_bytes + sizeof(png_bytep),
+  // the decoded rows, then the copy handed out
+  checkMemory(static_cast<std::uint64_t>(h.height), 2 * h.row_bytes + sizeof(png_bytep),
               path + " (" + dims + " pixels)");
 
   std::vector<png_byte> pixels(h.row_bytes * h.height);

@@ -82,6 +82,19 @@ DecodedImage decodeTiff(const std::string& path, ImageWant want) {
   }
   if (TIFFIsTiled(tif.get()) != 0 || planar != PLANARCONFIG_CONTIG)
     throw InputError(path + ": tiled or planar TIFF layouts are not supported (strips only)");
+  // Every strip must lie inside the file: a longer declared strip means a damaged file.
+  const std::uint32_t strips = TIFFNumberOfStrips(tif.get());
+  for (std::uint32_t k = 0; k < strips; ++k) {
+    int err = 0;
+    const std::uint64_t offset = TIFFGetStrileOffsetWithErr(tif.get(), k, &err);
+    const std::uint64_t bytes = TIFFGetStrileByteCountWithErr(tif.get(), k, &err);
+    const auto file_size = static_cast<std::uint64_t>(st.st_size);
+    if (err != 0 || offset > file_size || bytes > file_size - offset) {
+      throw InputError(path + ": strip " + std::to_string(k) + " (" + std::to_string(bytes) +
+                       " bytes at offset " + std::to_string(offset) +
+                       ") runs past the end of the " + std::to_string(file_size) + "-byte file");
+    }
+  }
   const std::string dims = std::to_string(width) + " x " + std::to_string(height);
   const std::uint64_t row_bytes = static_cast<std::uint64_t>(width) * samples * (bits / 8);
   if (static_cast<std::uint64_t>(TIFFScanlineSize64(tif.get())) != row_bytes)
