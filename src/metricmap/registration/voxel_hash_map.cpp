@@ -64,6 +64,12 @@ bool VoxelHashMap::nearest(const Eigen::Vector3d& p, double max_distance,
   return found;
 }
 
+const std::vector<Eigen::Vector3d>* VoxelHashMap::voxelPoints(const Eigen::Vector3d& p) const {
+  const Eigen::Array3i c = voxelOf(p, inv_voxel_);
+  const auto it = map_.find(packVoxel(c.x(), c.y(), c.z()));
+  return it == map_.end() ? nullptr : &it->second;
+}
+
 std::size_t VoxelHashMap::bytes() const {
   // Each voxel: a hash node (key, vector header, next pointer) plus a bucket pointer, and its
   // reserved point storage.

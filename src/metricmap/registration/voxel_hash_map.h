@@ -27,6 +27,9 @@ class VoxelHashMap {
   /// `max_distance`.
   bool nearest(const Eigen::Vector3d& p, double max_distance, Eigen::Vector3d& q) const;
 
+  /// \brief Points of the voxel holding `p` (nullptr when that voxel is empty).
+  const std::vector<Eigen::Vector3d>* voxelPoints(const Eigen::Vector3d& p) const;
+
   /// \brief Number of voxels / points held.
   std::size_t voxels() const { return map_.size(); }
   std::size_t points() const { return points_; }
