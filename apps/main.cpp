@@ -24,13 +24,15 @@ int main(int argc, char** argv) {
   metricmap::cli::addDepthToCloudCommand(app);
   metricmap::cli::addHeightMapCommand(app);
   metricmap::cli::addKittiCommand(app);
+  metricmap::cli::addOdometryCommand(app);
   metricmap::cli::addViewCommand(app);
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
     for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->check_name(argv[1]);
     if (!known) {
       std::cerr << "metricmap: usage: unknown subcommand '" << argv[1]
-                << "' (info, grid, octree, compare, lines, depth-to-cloud, heightmap, kitti; see "
+                << "' (info, grid, octree, compare, lines, depth-to-cloud, heightmap, kitti, "
+                   "odometry; see "
                    "--help)\n";
       return 2;
     }
