@@ -178,6 +178,11 @@ void addOdometryCommand(CLI::App& app) {
     if (!(o->config.min_range < o->config.max_range)) {
       throw CLI::ValidationError("--min-range", "must be below --max-range");
     }
+    try {
+      parseFrameList(o->frames);
+    } catch (const std::invalid_argument& e) {
+      throw CLI::ValidationError("--frames", e.what());
+    }
     run(*o);
   });
 }
