@@ -12,6 +12,14 @@ namespace {
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
+// Per source point: the voxel it fell in last time and the non-empty voxels around it, so
+// that a point staying in its voxel between steps needs no hash lookup.
+struct NeighbourCache {
+  std::uint64_t key = ~std::uint64_t{0};
+  int n = 0;
+  const VoxelHashMap::Cell* cells[27];
+};
+
 struct NormalEquations {
   Matrix6d h = Matrix6d::Zero();
   Vector6d g = Vector6d::Zero();
@@ -28,14 +36,22 @@ Eigen::Matrix3d minusHat(const Eigen::Vector3d& p) {
 // Pairs and normal equations at pose t. Residual in the sensor frame r = R^T (t p - q); its
 // Jacobian for the right perturbation (dt, dtheta) is [I, -[p]x].
 NormalEquations buildSystem(const std::vector<Eigen::Vector3d>& source, const VoxelHashMap& map,
-                            const Eigen::Isometry3d& t, double threshold) {
+                            const Eigen::Isometry3d& t, double threshold,
+                            std::vector<NeighbourCache>& cache) {
   NormalEquations ne;
   const Eigen::Matrix3d rt = t.linear().transpose();
   const double kernel2 = (threshold / 3.0) * (threshold / 3.0);
   Eigen::Vector3d q;
-  for (const Eigen::Vector3d& p : source) {
+  for (std::size_t i = 0; i < source.size(); ++i) {
+    const Eigen::Vector3d& p = source[i];
     const Eigen::Vector3d w = t * p;
-    if (!map.nearest(w, threshold, q)) continue;
+    NeighbourCache& c = cache[i];
+    const std::uint64_t key = map.keyOf(w);
+    if (key != c.key) {
+      c.key = key;
+      c.n = map.neighbours(w, c.cells);
+    }
+    if (!VoxelHashMap::nearestIn(c.cells, c.n, w, threshold, q)) continue;
     const Eigen::Vector3d r = rt * (w - q);
     const double e2 = r.squaredNorm() / kernel2;
     const double weight = 1.0 / ((1.0 + e2) * (1.0 + e2));
@@ -88,8 +104,9 @@ PointToPointIcpResult alignPointToPoint(const std::vector<Eigen::Vector3d>& sour
   PointToPointIcpResult res;
   res.pose = initial;
   if (source.empty() || map.empty()) return res;
+  std::vector<NeighbourCache> cache(source.size());
   for (res.iterations = 0; res.iterations < params.max_iterations;) {
-    const NormalEquations ne = buildSystem(source, map, res.pose, params.threshold);
+    const NormalEquations ne = buildSystem(source, map, res.pose, params.threshold, cache);
     if (ne.pairs < 6) break;
     const Vector6d step = ne.h.ldlt().solve(-ne.g);
     if (!step.allFinite()) break;
