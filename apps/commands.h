@@ -14,6 +14,7 @@ void addLinesCommand(CLI::App& app);
 void addDepthToCloudCommand(CLI::App& app);
 void addHeightMapCommand(CLI::App& app);
 void addKittiCommand(CLI::App& app);
+void addOdometryCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
 void addOccupancyCommand(CLI::App& app);
 

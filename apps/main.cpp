@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
   metricmap::cli::addDepthToCloudCommand(app);
   metricmap::cli::addHeightMapCommand(app);
   metricmap::cli::addKittiCommand(app);
+  metricmap::cli::addOdometryCommand(app);
   metricmap::cli::addViewCommand(app);
   metricmap::cli::addOccupancyCommand(app);
   if (argc > 1 && argv[1][0] != '-') {
@@ -50,7 +51,7 @@ int main(int argc, char** argv) {
     if (!known) {
       std::cerr << "metricmap: usage: unknown subcommand '" << argv[1]
                 << "' (info, grid, octree, compare, lines, depth-to-cloud, heightmap, kitti, view, "
-                   "occupancy; see "
+                   "occupancy, odometry; see "
                    "--help)\n";
       return 2;
     }

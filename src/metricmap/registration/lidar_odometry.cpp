@@ -156,10 +156,16 @@ OdometryResult LidarOdometry::registerFrame(const std::vector<Eigen::Vector3d>& 
         res.restarted = true;
       }
     }
+    if (config_.fine_threshold > 0.0 && res.threshold > config_.fine_threshold) {
+      const int before = icp.iterations;
+      icp = alignPointToPoint(source, map_, icp.pose, icpParams(config_, config_.fine_threshold));
+      icp.iterations += before;
+    }
     res.pose = icp.pose;
     res.correspondences = icp.correspondences;
     res.iterations = icp.iterations;
     res.degenerate_directions = icp.degenerate_directions;
+    res.eigen_ratio = icp.eigen_ratio;
     Eigen::Isometry3d deviation;
     deviation.matrix() = res.prediction.matrix().inverse() * res.pose.matrix();
     threshold_.update(deviation);

@@ -31,6 +31,8 @@ struct OdometryResult {
   int iterations = 0;               ///< Gauss-Newton steps
   double threshold = 0.0;           ///< correspondence threshold used (m)
   int degenerate_directions = 0;    ///< directions held at the prediction (0: none)
+  /// \brief Weakest / strongest direction of the surfaces' constraint (0 for the first scan).
+  double eigen_ratio = 0.0;
   bool restarted =
       false;  ///< registered again from zero motion (the prediction found too few pairs)
 };

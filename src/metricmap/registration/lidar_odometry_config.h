@@ -25,6 +25,11 @@ struct LidarOdometryConfig {
   /// \brief Smallest prediction error (m) a frame records in the threshold statistics: a
   /// standing vehicle's near-zero errors then narrow the threshold to 3 times this, no further.
   double min_deviation = 0.1;
+  /// \brief When the adaptive threshold is wider than this (m), the scan is registered again
+  /// from the result with this threshold: a wide threshold (the first frames, after a jolt)
+  /// admits the ground rings that travel with the sensor, and they pull towards zero motion.
+  /// 0 turns the second pass off.
+  double fine_threshold = 1.0;
   /// \brief Gauss-Newton iterations per scan, at most.
   int max_iterations = 500;
   /// \brief Stop when the update's norm (translation m + rotation rad) is below this.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
 #include "metricmap/registration/se3.h"
@@ -11,35 +12,88 @@ namespace {
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
+// Per source point: the voxel it fell in last time and the non-empty voxels around it, so
+// that a point staying in its voxel between steps needs no hash lookup.
+struct NeighbourCache {
+  std::uint64_t key = ~std::uint64_t{0};
+  int n = 0;
+  const VoxelHashMap::Cell* cells[27];
+};
+
 struct NormalEquations {
   Matrix6d h = Matrix6d::Zero();
   Vector6d g = Vector6d::Zero();
   std::size_t pairs = 0;
 };
 
-// Pairs and normal equations at pose t. Residual in the sensor frame r = R^T (t p - q);
-// its Jacobian for the scaled right perturbation (dt, L dtheta) is [I, -[p]x / L].
+// -[p]x: the derivative of (w x p) with respect to w, negated sign folded in.
+Eigen::Matrix3d minusHat(const Eigen::Vector3d& p) {
+  Eigen::Matrix3d m;
+  m << 0, p.z(), -p.y(), -p.z(), 0, p.x(), p.y(), -p.x(), 0;
+  return m;
+}
+
+// Pairs and normal equations at pose t. Residual in the sensor frame r = R^T (t p - q); its
+// Jacobian for the right perturbation (dt, dtheta) is [I, -[p]x].
 NormalEquations buildSystem(const std::vector<Eigen::Vector3d>& source, const VoxelHashMap& map,
-                            const Eigen::Isometry3d& t, double threshold, double inv_scale) {
+                            const Eigen::Isometry3d& t, double threshold,
+                            std::vector<NeighbourCache>& cache) {
   NormalEquations ne;
   const Eigen::Matrix3d rt = t.linear().transpose();
   const double kernel2 = (threshold / 3.0) * (threshold / 3.0);
   Eigen::Vector3d q;
-  for (const Eigen::Vector3d& p : source) {
+  for (std::size_t i = 0; i < source.size(); ++i) {
+    const Eigen::Vector3d& p = source[i];
     const Eigen::Vector3d w = t * p;
-    if (!map.nearest(w, threshold, q)) continue;
+    NeighbourCache& c = cache[i];
+    const std::uint64_t key = map.keyOf(w);
+    if (key != c.key) {
+      c.key = key;
+      c.n = map.neighbours(w, c.cells);
+    }
+    if (!VoxelHashMap::nearestIn(c.cells, c.n, w, threshold, q)) continue;
     const Eigen::Vector3d r = rt * (w - q);
     const double e2 = r.squaredNorm() / kernel2;
     const double weight = 1.0 / ((1.0 + e2) * (1.0 + e2));
-    const Eigen::Vector3d ps = p * inv_scale;
-    Eigen::Matrix<double, 3, 6> j;
-    j.leftCols<3>().setIdentity();
-    j.rightCols<3>() << 0, ps.z(), -ps.y(), -ps.z(), 0, ps.x(), ps.y(), -ps.x(), 0;
-    ne.h.noalias() += weight * j.transpose() * j;
-    ne.g.noalias() += weight * j.transpose() * r;
+    const Eigen::Matrix3d j = minusHat(p);  // rotation part; translation part is I
+    ne.h.topLeftCorner<3, 3>() += weight * Eigen::Matrix3d::Identity();
+    ne.h.topRightCorner<3, 3>().noalias() += weight * j;
+    ne.h.bottomRightCorner<3, 3>().noalias() += weight * j.transpose() * j;
+    ne.g.head<3>() += weight * r;
+    ne.g.tail<3>().noalias() += weight * j.transpose() * r;
     ++ne.pairs;
   }
+  ne.h.bottomLeftCorner<3, 3>() = ne.h.topRightCorner<3, 3>().transpose();
   return ne;
+}
+
+// Point-to-plane information of the pairs at pose t (sensor frame, rotation scaled by 1/scale).
+Matrix6d surfaceInformation(const std::vector<Eigen::Vector3d>& source, const VoxelHashMap& map,
+                            const Eigen::Isometry3d& t, double threshold, double inv_scale) {
+  Matrix6d info = Matrix6d::Zero();
+  const Eigen::Matrix3d rt = t.linear().transpose();
+  Eigen::Vector3d q;
+  for (const Eigen::Vector3d& p : source) {
+    if (!map.nearest(t * p, threshold, q)) continue;
+    const std::vector<Eigen::Vector3d>* cell = map.voxelPoints(q);
+    if (cell == nullptr || cell->size() < 6) continue;
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (const auto& m : *cell) mean += m;
+    mean /= static_cast<double>(cell->size());
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for (const auto& m : *cell) cov.noalias() += (m - mean) * (m - mean).transpose();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+    eig.computeDirect(cov);
+    // Only surfaces: the smallest spread far below the middle one. (A voxel across an edge,
+    // or a few points narrow along one axis, would give a normal no surface has.)
+    if (!(eig.eigenvalues()(0) < 0.02 * eig.eigenvalues()(1))) continue;
+    const Eigen::Vector3d n = rt * eig.eigenvectors().col(0);
+    Vector6d j;
+    j.head<3>() = n;
+    j.tail<3>() = p.cross(n) * inv_scale;
+    info.noalias() += j * j.transpose();
+  }
+  return info;
 }
 
 }  // namespace
@@ -50,30 +104,12 @@ PointToPointIcpResult alignPointToPoint(const std::vector<Eigen::Vector3d>& sour
   PointToPointIcpResult res;
   res.pose = initial;
   if (source.empty() || map.empty()) return res;
-  double sq = 0.0;
-  for (const auto& p : source) sq += p.squaredNorm();
-  const double scale = std::max(1.0, std::sqrt(sq / static_cast<double>(source.size())));
-  const double inv_scale = 1.0 / scale;
+  std::vector<NeighbourCache> cache(source.size());
   for (res.iterations = 0; res.iterations < params.max_iterations;) {
-    const NormalEquations ne = buildSystem(source, map, res.pose, params.threshold, inv_scale);
-    res.correspondences = ne.pairs;
+    const NormalEquations ne = buildSystem(source, map, res.pose, params.threshold, cache);
     if (ne.pairs < 6) break;
-    const Eigen::SelfAdjointEigenSolver<Matrix6d> eig(ne.h);
-    const Vector6d lambda = eig.eigenvalues();  // ascending
-    const double largest = lambda(5);
-    if (!(largest > 0.0)) break;
-    res.eigen_ratio = lambda(0) / largest;
-    res.degenerate_directions = 0;
-    Vector6d step = Vector6d::Zero();
-    for (int i = 0; i < 6; ++i) {
-      if (lambda(i) < params.degeneracy_ratio * largest) {
-        ++res.degenerate_directions;
-        continue;
-      }
-      const Vector6d v = eig.eigenvectors().col(i);
-      step -= v * (v.dot(ne.g) / lambda(i));
-    }
-    step.tail<3>() *= inv_scale;
+    const Vector6d step = ne.h.ldlt().solve(-ne.g);
+    if (!step.allFinite()) break;
     res.pose = res.pose * se3Exp(step);
     ++res.iterations;
     if (step.norm() < params.convergence) {
@@ -81,11 +117,35 @@ PointToPointIcpResult alignPointToPoint(const std::vector<Eigen::Vector3d>& sour
       break;
     }
   }
-  // Pairs at the final pose (the loop counted them before its last step).
   Eigen::Vector3d q;
   res.correspondences = 0;
+  double sq = 0.0;
   for (const Eigen::Vector3d& p : source) {
     res.correspondences += map.nearest(res.pose * p, params.threshold, q) ? 1 : 0;
+    sq += p.squaredNorm();
+  }
+  if (params.degeneracy_ratio <= 0.0 || res.correspondences < 6) return res;
+
+  // Unobservable directions: hold them at the initial guess.
+  const double scale = std::max(1.0, std::sqrt(sq / static_cast<double>(source.size())));
+  const Matrix6d info = surfaceInformation(source, map, res.pose, params.threshold, 1.0 / scale);
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> eig(info);
+  const Vector6d lambda = eig.eigenvalues();  // ascending
+  if (!(lambda(5) > 0.0)) return res;
+  res.eigen_ratio = lambda(0) / lambda(5);
+  Eigen::Isometry3d correction;
+  correction.matrix() = initial.matrix().inverse() * res.pose.matrix();
+  Vector6d xi = se3Log(correction);
+  xi.tail<3>() *= scale;
+  for (int i = 0; i < 6; ++i) {
+    if (lambda(i) >= params.degeneracy_ratio * lambda(5)) continue;
+    ++res.degenerate_directions;
+    const Vector6d v = eig.eigenvectors().col(i);
+    xi -= v * v.dot(xi);
+  }
+  if (res.degenerate_directions > 0) {
+    xi.tail<3>() /= scale;
+    res.pose = initial * se3Exp(xi);
   }
   return res;
 }

@@ -40,28 +40,48 @@ void VoxelHashMap::removeFar(const Eigen::Vector3d& origin, double radius) {
   }
 }
 
-bool VoxelHashMap::nearest(const Eigen::Vector3d& p, double max_distance,
-                           Eigen::Vector3d& q) const {
+int VoxelHashMap::neighbours(const Eigen::Vector3d& p, const Cell* out[27]) const {
   const Eigen::Array3i c = voxelOf(p, inv_voxel_);
-  double best = max_distance * max_distance;
-  bool found = false;
+  int n = 0;
   for (int dx = -1; dx <= 1; ++dx) {
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dz = -1; dz <= 1; ++dz) {
         const auto it = map_.find(packVoxel(c.x() + dx, c.y() + dy, c.z() + dz));
-        if (it == map_.end()) continue;
-        for (const Eigen::Vector3d& m : it->second) {
-          const double d2 = (m - p).squaredNorm();
-          if (d2 < best) {
-            best = d2;
-            q = m;
-            found = true;
-          }
-        }
+        if (it != map_.end()) out[n++] = &it->second;
+      }
+    }
+  }
+  return n;
+}
+
+bool VoxelHashMap::nearestIn(const Cell* const* cells, int n, const Eigen::Vector3d& p,
+                             double max_distance, Eigen::Vector3d& q) {
+  double best = max_distance * max_distance;
+  bool found = false;
+  for (int i = 0; i < n; ++i) {
+    for (const Eigen::Vector3d& m : *cells[i]) {
+      const double d2 = (m - p).squaredNorm();
+      if (d2 < best) {
+        best = d2;
+        q = m;
+        found = true;
       }
     }
   }
   return found;
+}
+
+bool VoxelHashMap::nearest(const Eigen::Vector3d& p, double max_distance,
+                           Eigen::Vector3d& q) const {
+  const Cell* cells[27];
+  const int n = neighbours(p, cells);
+  return nearestIn(cells, n, p, max_distance, q);
+}
+
+const std::vector<Eigen::Vector3d>* VoxelHashMap::voxelPoints(const Eigen::Vector3d& p) const {
+  const Eigen::Array3i c = voxelOf(p, inv_voxel_);
+  const auto it = map_.find(packVoxel(c.x(), c.y(), c.z()));
+  return it == map_.end() ? nullptr : &it->second;
 }
 
 std::size_t VoxelHashMap::bytes() const {

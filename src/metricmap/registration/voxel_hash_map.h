@@ -27,6 +27,22 @@ class VoxelHashMap {
   /// `max_distance`.
   bool nearest(const Eigen::Vector3d& p, double max_distance, Eigen::Vector3d& q) const;
 
+  using Cell = std::vector<Eigen::Vector3d>;
+  /// \brief Key of the voxel holding `p`.
+  std::uint64_t keyOf(const Eigen::Vector3d& p) const {
+    const Eigen::Array3i c = voxelOf(p, inv_voxel_);
+    return packVoxel(c.x(), c.y(), c.z());
+  }
+  /// \brief The non-empty voxels among the 27 around `p` into `out`; returns how many. The
+  /// pointers stay valid until the map changes.
+  int neighbours(const Eigen::Vector3d& p, const Cell* out[27]) const;
+  /// \brief Nearest point to `p` among `cells` within `max_distance` (false when none).
+  static bool nearestIn(const Cell* const* cells, int n, const Eigen::Vector3d& p,
+                        double max_distance, Eigen::Vector3d& q);
+
+  /// \brief Points of the voxel holding `p` (nullptr when that voxel is empty).
+  const std::vector<Eigen::Vector3d>* voxelPoints(const Eigen::Vector3d& p) const;
+
   /// \brief Number of voxels / points held.
   std::size_t voxels() const { return map_.size(); }
   std::size_t points() const { return points_; }
