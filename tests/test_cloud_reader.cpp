@@ -121,6 +121,26 @@ TEST(CloudReader, DropsNaNAndInfCoordinatesInAscii) {
   EXPECT_EQ(cloud[1].x, 4.0f);
 }
 
+TEST(CloudReader, ViewpointBecomesTheSensorPoseAndBadOnesAreRefused) {
+  TempDir tmp;
+  const std::string head =
+      "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1\nHEIGHT 1\n";
+  Cloud cloud;
+  const LoadReport r = loadCloud(
+      tmp.write("vp.pcd", head + "VIEWPOINT 5 -2 1.5 0 0 0 2\nPOINTS 1\nDATA ascii\n1 2 3\n"),
+      cloud);
+  EXPECT_TRUE(r.has_viewpoint);
+  EXPECT_EQ(cloud.sensor_origin_, Eigen::Vector4f(5, -2, 1.5f, 0));
+  EXPECT_NEAR(cloud.sensor_orientation_.z(), 1.0f, 1e-6f);  // normalised: 180 deg about z
+  EXPECT_NEAR(cloud.sensor_orientation_.w(), 0.0f, 1e-6f);
+  for (const char* bad : {"nan 0 0 1 0 0 0", "0x10 0 0 1 0 0 0", "0 0 0 0 0 0 0", "0 0 0 1 0 0",
+                          "0 0 0 1 0 0 0 0", "0 0 0 1 0 0 0x"}) {
+    const std::string path =
+        tmp.write("bad.pcd", head + "VIEWPOINT " + bad + "\nPOINTS 1\nDATA ascii\n1 2 3\n");
+    EXPECT_THROW(loadCloud(path, cloud), InputError) << bad;
+  }
+}
+
 TEST(CloudReader, StudyScanWithStrayXmlLines) {
   // poli001.pcd has 6 XML lines after DATA ascii. pcl::PCDReader alone turns them into six
   // points at the origin and drops the last six real points; the reader must not.

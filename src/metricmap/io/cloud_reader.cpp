@@ -101,6 +101,12 @@ LoadReport loadCloud(const std::string& path, pcl::PointCloud<PointT>& cloud) {
   if (blob.point_step == 0 || blob.data.size() / blob.point_step < report.points_in_file)
     throw InputError(path + ": the point data is shorter than the declared point count");
   pcl::fromPCLPointCloud2(blob, cloud);
+  const double* v = report.viewpoint;  // the sensor pose (PCD VIEWPOINT; identity otherwise)
+  cloud.sensor_origin_ = Eigen::Vector4f(static_cast<float>(v[0]), static_cast<float>(v[1]),
+                                         static_cast<float>(v[2]), 0.0f);
+  cloud.sensor_orientation_ = Eigen::Quaternionf(static_cast<float>(v[3]), static_cast<float>(v[4]),
+                                                 static_cast<float>(v[5]), static_cast<float>(v[6]))
+                                  .normalized();
   dropNonFinite(cloud, report);
   if (cloud.empty()) {
     throw InputError(path + ": no finite points (" + std::to_string(report.points_in_file) +

@@ -92,6 +92,19 @@ void parseHeader(const std::string& path, std::istream& in, PcdHeader& h) {
     } else if (key == "POINTS" && t.size() == 2) {
       h.points = parseCount(path, "POINTS", t[1], 0xFFFFFFFFull);
       have_points = true;
+    } else if (key == "VIEWPOINT") {
+      if (t.size() != 8) fail(path, "VIEWPOINT needs 7 numbers (tx ty tz qw qx qy qz)");
+      for (int i = 0; i < 7; ++i) {
+        try {
+          h.viewpoint[i] = parseFiniteDouble(t[i + 1], "VIEWPOINT");
+        } catch (const std::invalid_argument& e) {
+          fail(path, e.what());
+        }
+      }
+      const double qn = h.viewpoint[3] * h.viewpoint[3] + h.viewpoint[4] * h.viewpoint[4] +
+                        h.viewpoint[5] * h.viewpoint[5] + h.viewpoint[6] * h.viewpoint[6];
+      if (!(qn > 1e-12)) fail(path, "VIEWPOINT quaternion is zero");
+      h.has_viewpoint = true;
     } else if (key == "DATA") {
       if (t.size() != 2 || (t[1] != "ascii" && t[1] != "binary" && t[1] != "binary_compressed")) {
         fail(path, "DATA must be ascii, binary or binary_compressed");

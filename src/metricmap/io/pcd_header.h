@@ -23,7 +23,9 @@ struct PcdHeader {
   std::uint64_t data_offset = 0;  ///< byte offset of the body
   std::uint64_t point_bytes = 0;  ///< bytes of one point in binary
   std::uint64_t values_per_point = 0;
-  std::string ascii_body;  ///< ascii only: the well-formed point lines (at most `points`)
+  std::string ascii_body;      ///< ascii only: the well-formed point lines (at most `points`)
+  bool has_viewpoint = false;  ///< a VIEWPOINT line was present
+  double viewpoint[7] = {0, 0, 0, 1, 0, 0, 0};  ///< tx ty tz qw qx qy qz
 };
 
 /// \brief Parse and check the header of `path`; for binary bodies check sizes, for

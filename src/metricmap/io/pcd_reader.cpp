@@ -62,6 +62,8 @@ void layout(const std::string& path, const PcdHeader& h, pcl::PCLPointCloud2& bl
 
 void readPcd(const std::string& path, pcl::PCLPointCloud2& blob, LoadReport& report) {
   const PcdHeader h = checkPcdFile(path, report.skipped_lines);
+  report.has_viewpoint = h.has_viewpoint;
+  for (int i = 0; i < 7; ++i) report.viewpoint[i] = h.viewpoint[i];
   report.format = "pcd " + h.data;
   // The body as PCL decodes it, then the cloud (up to 48 bytes a point).
   checkMemory(h.points, h.point_bytes + 48, path + " (" + std::to_string(h.points) + " points)");
