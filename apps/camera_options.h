@@ -7,7 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "metricmap/io/camera_intrinsics.h"
+#include "metricmap/camera/camera_intrinsics.h"
 #include "metricmap/io/depth_image.h"
 
 namespace metricmap::cli {

@@ -7,7 +7,7 @@
 #include "camera_options.h"
 #include "cli_common.h"
 #include "commands.h"
-#include "metricmap/height/depth_to_cloud.h"
+#include "metricmap/camera/depth_to_cloud.h"
 #include "metricmap/io/cloud_writer.h"
 
 namespace metricmap::cli {

@@ -15,7 +15,7 @@
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/output_set.h"
-#include "metricmap/kitti/kitti_sequence.h"
+#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/mapping/scan_mapper.h"
 #include "table.h"
 

@@ -6,7 +6,7 @@
 
 #include "bench_common.h"
 #include "metricmap/io/cloud_reader.h"
-#include "metricmap/kitti/kitti_sequence.h"
+#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/mapping/scan_mapper.h"
 
 namespace metricmap::bench {

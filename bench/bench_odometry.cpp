@@ -8,8 +8,8 @@
 
 #include "bench_common.h"
 #include "metricmap/io/cloud_reader.h"
-#include "metricmap/kitti/kitti_sequence.h"
-#include "metricmap/kitti/scan_registration.h"
+#include "metricmap/datasets/kitti_sequence.h"
+#include "metricmap/registration/scan_registration.h"
 #include "metricmap/registration/lidar_odometry.h"
 
 namespace metricmap::bench {

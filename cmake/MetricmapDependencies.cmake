@@ -1,5 +1,8 @@
 # PCL's io component pulls in VTK; keep the component list short for configure speed.
-find_package(PCL 1.12 REQUIRED COMPONENTS common io filters octree sample_consensus segmentation kdtree registration)
+find_package(PCL 1.12 REQUIRED COMPONENTS common io filters octree sample_consensus kdtree registration)
+# What metricmap::core's public headers need: PCL common and filters (no VTK, no PCL io).
+set(PCL_CORE_INCLUDE_DIRS ${PCL_COMMON_INCLUDE_DIRS} ${PCL_FILTERS_INCLUDE_DIRS})
+list(REMOVE_DUPLICATES PCL_CORE_INCLUDE_DIRS)
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(nlohmann_json 3.2 REQUIRED)
 find_package(yaml-cpp REQUIRED)

@@ -4,7 +4,7 @@
 
 #include "fuzz_common.h"
 #include "metricmap/exceptions.h"
-#include "metricmap/io/camera_intrinsics.h"
+#include "metricmap/camera/camera_intrinsics.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   for (const char* ext : {".xml", ".json"}) {

@@ -6,7 +6,7 @@
 #include <pcl/common/transforms.h>
 
 #include "metricmap/io/cloud_reader.h"
-#include "metricmap/kitti/kitti_sequence.h"
+#include "metricmap/datasets/kitti_sequence.h"
 #include "test_data.h"
 
 namespace metricmap::test {

@@ -13,9 +13,9 @@
 
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
-#include "metricmap/kitti/kitti_sequence.h"
-#include "metricmap/kitti/occupancy_map_2d.h"
-#include "metricmap/kitti/scan_registration.h"
+#include "metricmap/datasets/kitti_sequence.h"
+#include "metricmap/mapping/occupancy_map_2d.h"
+#include "metricmap/registration/scan_registration.h"
 #include "test_data.h"
 
 namespace metricmap {

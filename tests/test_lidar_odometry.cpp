@@ -13,8 +13,8 @@
 
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
-#include "metricmap/kitti/kitti_sequence.h"
-#include "metricmap/kitti/scan_registration.h"
+#include "metricmap/datasets/kitti_sequence.h"
+#include "metricmap/registration/scan_registration.h"
 #include "metricmap/registration/adaptive_threshold.h"
 #include "metricmap/registration/deskew.h"
 #include "metricmap/registration/lidar_odometry.h"

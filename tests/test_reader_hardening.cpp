@@ -11,8 +11,8 @@
 #include <gtest/gtest.h>
 
 #include "metricmap/exceptions.h"
-#include "metricmap/height/depth_to_cloud.h"
-#include "metricmap/io/camera_intrinsics.h"
+#include "metricmap/camera/depth_to_cloud.h"
+#include "metricmap/camera/camera_intrinsics.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/laser_scan.h"
 

@@ -12,7 +12,7 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/grid/occupancy_grid.h"
 #include "metricmap/io/cloud_reader.h"
-#include "metricmap/kitti/kitti_sequence.h"
+#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/mapping/scan_mapper.h"
 #include "test_data.h"
 

@@ -12,8 +12,8 @@
 #include <pcl/point_types.h>
 #include <Eigen/Geometry>
 
-#include "metricmap/kitti/occupancy_map_2d.h"
-#include "metricmap/kitti/scan_registration.h"
+#include "metricmap/mapping/occupancy_map_2d.h"
+#include "metricmap/registration/scan_registration.h"
 #include "metricmap/registration/lidar_odometry.h"
 
 namespace metricmap {

@@ -5,10 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <yaml-cpp/yaml.h>
-
-#include "metricmap/io/array_writers.h"
-#include "metricmap/io/cloud_writer.h"
+#include "metricmap/io/map_server.h"
 
 namespace metricmap {
 
@@ -65,20 +62,10 @@ TrinaryMap projectBand(const LogOddsMap& map, double z_min, double z_max) {
 void writeTrinaryMapServer(const TrinaryMap& map, const std::string& pgm_path,
                            const std::string& preview_png) {
   if (map.width == 0) throw std::invalid_argument("the trinary map is empty");
-  const std::size_t slash = pgm_path.find_last_of('/');
-  const std::string image = slash == std::string::npos ? pgm_path : pgm_path.substr(slash + 1);
-  YAML::Emitter yaml;
-  yaml.SetDoublePrecision(10);
-  yaml << YAML::BeginMap << YAML::Key << "image" << YAML::Value << image << YAML::Key << "mode"
-       << YAML::Value << "trinary" << YAML::Key << "resolution" << YAML::Value << map.resolution
-       << YAML::Key << "origin" << YAML::Value << YAML::Flow << YAML::BeginSeq << map.origin_x
-       << map.origin_y << 0.0 << YAML::EndSeq << YAML::Key << "negate" << YAML::Value << 0
-       << YAML::Key << "occupied_thresh" << YAML::Value << 0.65 << YAML::Key << "free_thresh"
-       << YAML::Value << 0.196 << YAML::EndMap;
-  writePgm(pgm_path, map.width, map.height, map.cells);
-  const std::string stem = pgm_path.substr(0, pgm_path.find_last_of('.'));
-  writeTextAtomic(stem + ".yaml", std::string(yaml.c_str()) + "\n");
-  if (!preview_png.empty()) writePng(preview_png, map.width, map.height, 1, map.cells);
+  MapServerFiles files = mapServerFiles(pgm_path);
+  files.preview_png = preview_png;
+  writeMapServer({map.width, map.height, map.resolution, map.origin_x, map.origin_y, map.cells, true},
+                 files);
 }
 
 pcl::PointCloud<pcl::PointXYZ> occupiedCenters(const LogOddsMap& map) {

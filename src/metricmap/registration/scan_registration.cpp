@@ -1,4 +1,4 @@
-#include "metricmap/kitti/scan_registration.h"
+#include "metricmap/registration/scan_registration.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "metricmap/height/floor_fit.h"
+#include "metricmap/mapping/floor_fit.h"
 
 #include <cmath>
 #include <stdexcept>

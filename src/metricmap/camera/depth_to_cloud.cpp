@@ -1,4 +1,4 @@
-#include "metricmap/height/depth_to_cloud.h"
+#include "metricmap/camera/depth_to_cloud.h"
 
 #include <cmath>
 #include <limits>

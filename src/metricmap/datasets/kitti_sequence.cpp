@@ -1,4 +1,4 @@
-#include "metricmap/kitti/kitti_sequence.h"
+#include "metricmap/datasets/kitti_sequence.h"
 
 #include <cmath>
 #include <cstdio>

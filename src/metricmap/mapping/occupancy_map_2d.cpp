@@ -1,16 +1,13 @@
-#include "metricmap/kitti/occupancy_map_2d.h"
+#include "metricmap/mapping/occupancy_map_2d.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include <yaml-cpp/yaml.h>
-
 #include "metricmap/detail/fast_floor.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/array_writers.h"
-#include "metricmap/io/cloud_writer.h"
 
 namespace metricmap {
 namespace {
@@ -24,11 +21,6 @@ std::uint64_t pack(std::int64_t i, std::int64_t j) {
 void unpack(std::uint64_t key, std::int64_t& i, std::int64_t& j) {
   i = static_cast<std::int32_t>(static_cast<std::uint32_t>(key >> 32));
   j = static_cast<std::int32_t>(static_cast<std::uint32_t>(key & 0xFFFFFFFFu));
-}
-
-std::string baseName(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
 }  // namespace
@@ -105,13 +97,6 @@ MapImage OccupancyMap2D::image(std::uint64_t max_pixels) const {
   return m;
 }
 
-MapServerFiles mapServerFiles(const std::string& pgm_path) {
-  const auto dot = pgm_path.find_last_of('.'), slash = pgm_path.find_last_of('/');
-  const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-  const std::string stem = has_ext ? pgm_path.substr(0, dot) : pgm_path;
-  return {pgm_path, stem + ".yaml", stem + "_preview.png", stem + "_heat.png", baseName(pgm_path)};
-}
-
 std::size_t writeMapServer(const MapImage& map, std::uint32_t min_hits,
                            const MapServerFiles& files) {
   if (map.width == 0) throw std::invalid_argument("the map is empty: no point was projected");
@@ -124,18 +109,9 @@ std::size_t writeMapServer(const MapImage& map, std::uint32_t min_hits,
     occupied += occ ? 1 : 0;
     most = std::max(most, map.hits[i]);
   }
-  writePgm(files.pgm, map.width, map.height, grey);
-
-  YAML::Emitter yaml;
-  yaml.SetDoublePrecision(10);
-  yaml << YAML::BeginMap << YAML::Key << "image" << YAML::Value << files.image_name << YAML::Key
-       << "resolution" << YAML::Value << map.resolution << YAML::Key << "origin" << YAML::Value
-       << YAML::Flow << YAML::BeginSeq << map.origin_x << map.origin_y << 0.0 << YAML::EndSeq
-       << YAML::Key << "negate" << YAML::Value << 0 << YAML::Key << "occupied_thresh" << YAML::Value
-       << 0.65 << YAML::Key << "free_thresh" << YAML::Value << 0.196 << YAML::EndMap;
-  writeTextAtomic(files.yaml, std::string(yaml.c_str()) + "\n");
-
-  if (!files.preview_png.empty()) writePng(files.preview_png, map.width, map.height, 1, grey);
+  MapServerImage out{map.width, map.height, map.resolution, map.origin_x, map.origin_y, {}, false};
+  out.pixels = std::move(grey);
+  writeMapServer(out, files);
   if (!files.heat_png.empty()) {
     std::vector<std::uint8_t> heat(map.hits.size() * 3, 0);
     const double scale = std::log1p(static_cast<double>(most));

@@ -10,6 +10,8 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
+#include "metricmap/io/map_server.h"
+
 namespace metricmap {
 
 /// \brief Projection plane: the image's x and y axes are these world axes. For xz the image's
@@ -56,20 +58,10 @@ class OccupancyMap2D {
   std::unordered_map<std::uint64_t, std::uint32_t> hits_;
 };
 
-/// \brief The files of a map_server map: PGM, YAML beside it, and optional PNG preview and
-/// heat map; `image_name` is what the YAML's `image:` names (the PGM's final file name).
-struct MapServerFiles {
-  std::string pgm, yaml, preview_png, heat_png, image_name;
-};
-
-/// \brief M.pgm -> M.pgm, M.yaml, M_preview.png, M_heat.png, image "M.pgm" (without a
-/// directory).
-MapServerFiles mapServerFiles(const std::string& pgm_path);
-
 /// \brief Write a map_server pair: PGM (occupied = hits >= min_hits, 0 black; else 254) and
 /// YAML (image, resolution, origin [x, y, 0] of the lower-left pixel, negate 0,
 /// occupied_thresh 0.65, free_thresh 0.196), plus the PNG preview and heat map when their paths
-/// are not empty. Each file is written through a temporary name and renamed.
+/// are not empty. Each file is written through a temporary name and renamed (io/map_server.h).
 /// \throws std::invalid_argument for an empty map
 /// \return the number of occupied cells
 std::size_t writeMapServer(const MapImage& map, std::uint32_t min_hits,

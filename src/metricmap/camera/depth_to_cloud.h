@@ -5,7 +5,7 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
-#include "metricmap/io/camera_intrinsics.h"
+#include "metricmap/camera/camera_intrinsics.h"
 #include "metricmap/io/depth_image.h"
 
 namespace metricmap {

@@ -1,4 +1,4 @@
-#include "metricmap/height/height_map.h"
+#include "metricmap/mapping/height_map.h"
 
 #include <algorithm>
 #include <cmath>

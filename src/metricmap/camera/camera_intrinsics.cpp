@@ -1,4 +1,4 @@
-#include "metricmap/io/camera_intrinsics.h"
+#include "metricmap/camera/camera_intrinsics.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,41 @@
+#include "metricmap/io/map_server.h"
+
+#include <stdexcept>
+
+#include <yaml-cpp/yaml.h>
+
+#include "metricmap/io/array_writers.h"
+#include "metricmap/io/cloud_writer.h"
+
+namespace metricmap {
+
+MapServerFiles mapServerFiles(const std::string& pgm_path) {
+  const auto dot = pgm_path.find_last_of('.'), slash = pgm_path.find_last_of('/');
+  const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  const std::string stem = has_ext ? pgm_path.substr(0, dot) : pgm_path;
+  const std::string name = slash == std::string::npos ? pgm_path : pgm_path.substr(slash + 1);
+  return {pgm_path, stem + ".yaml", stem + "_preview.png", stem + "_heat.png", name};
+}
+
+void writeMapServer(const MapServerImage& image, const MapServerFiles& files) {
+  if (image.width <= 0 || image.height <= 0)
+    throw std::invalid_argument("the map is empty: no cell to write to " + files.pgm);
+  if (image.pixels.size() !=
+      static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height))
+    throw std::invalid_argument("map image pixel count does not match its size");
+  YAML::Emitter yaml;
+  yaml.SetDoublePrecision(10);
+  yaml << YAML::BeginMap << YAML::Key << "image" << YAML::Value << files.image_name;
+  if (image.trinary) yaml << YAML::Key << "mode" << YAML::Value << "trinary";
+  yaml << YAML::Key << "resolution" << YAML::Value << image.resolution << YAML::Key << "origin"
+       << YAML::Value << YAML::Flow << YAML::BeginSeq << image.origin_x << image.origin_y << 0.0
+       << YAML::EndSeq << YAML::Key << "negate" << YAML::Value << 0 << YAML::Key
+       << "occupied_thresh" << YAML::Value << 0.65 << YAML::Key << "free_thresh" << YAML::Value
+       << 0.196 << YAML::EndMap;
+  writePgm(files.pgm, image.width, image.height, image.pixels);
+  writeTextAtomic(files.yaml, std::string(yaml.c_str()) + "\n");
+  if (!files.preview_png.empty())
+    writePng(files.preview_png, image.width, image.height, 1, image.pixels);
+}
+
+}  // namespace metricmap
