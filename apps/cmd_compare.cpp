@@ -12,8 +12,8 @@
 #include "pcl_peer.h"
 #include "stats_json.h"
 #include "study_config.h"
-#include "study_plot.h"
 #include "table.h"
+#include "viz_loader.h"
 
 namespace metricmap::cli {
 namespace {
@@ -123,7 +123,7 @@ std::string render(const std::vector<Record>& records, const CompareOptions& o) 
 
 void plot(const std::vector<Record>& records, const CompareOptions& o, const std::string& path) {
   std::vector<std::string> categories;
-  PlotPanel total{"cells / nodes in all", false, {}},
+  viz::PlotPanel total{"cells / nodes in all", false, {}},
       occupied{"occupied cells / leaves", false, {}}, empty{"empty cells / leaves", false, {}},
       mean{"mean points per occupied cell / leaf", false, {}};
   std::vector<double> g_total, o_total, g_occ, o_occ, g_empty, o_empty, g_mean, o_mean, p_leaves;
@@ -147,7 +147,7 @@ void plot(const std::vector<Record>& records, const CompareOptions& o, const std
   if (o.pcl_octree) occupied.series.push_back({"pcl::octree leaves", p_leaves});
   empty.series = {{"grid", g_empty}, {"octree", o_empty}};
   mean.series = {{"grid", g_mean}, {"octree", o_mean}};
-  writeStudyPlot(path, categories, {total, occupied, empty, mean});
+  drawingModule().write_study_plot(path, categories, {total, occupied, empty, mean});
 }
 
 void runCompare(const CompareOptions& o) {

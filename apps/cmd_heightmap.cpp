@@ -9,15 +9,15 @@
 #include "camera_options.h"
 #include "cli_common.h"
 #include "commands.h"
+#include "metricmap/camera/depth_to_cloud.h"
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/common/parse_number.h"
 #include "metricmap/exceptions.h"
-#include "metricmap/camera/depth_to_cloud.h"
-#include "metricmap/mapping/floor_fit.h"
-#include "metricmap/mapping/height_map.h"
 #include "metricmap/io/array_writers.h"
 #include "metricmap/io/input_file.h"
 #include "metricmap/io/output_set.h"
+#include "metricmap/mapping/floor_fit.h"
+#include "metricmap/mapping/height_map.h"
 #include "table.h"
 
 namespace metricmap::cli {

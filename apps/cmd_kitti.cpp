@@ -11,11 +11,11 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "metricmap/common/parse_number.h"
+#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/output_set.h"
-#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/mapping/scan_mapper.h"
 #include "table.h"
 

@@ -14,9 +14,9 @@
 #include "metricmap/io/laser_scan.h"
 #include "metricmap/io/output_set.h"
 #include "metricmap/lines/split_and_merge.h"
-#include "png_drawing.h"
 #include "svg_drawing.h"
 #include "table.h"
+#include "viz_loader.h"
 
 namespace metricmap::cli {
 namespace {
@@ -137,7 +137,8 @@ void runLines(const LinesOptions& o) {
     sam.segment(results[k], members);
     seconds += secondsSince(t0);
   }
-  if (!o.png.empty()) writeScanPng(outputs.stage(o.png), *clouds.front(), results.front());
+  if (!o.png.empty())
+    drawingModule().write_scan_png(outputs.stage(o.png), *clouds.front(), results.front());
   if (!o.svg.empty()) {
     writeTextAtomic(outputs.stage(o.svg),
                     drawScanSvg(*clouds.front(), results.front(),

@@ -15,10 +15,10 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
-#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/occupancy/occupancy_export.h"
 #include "metricmap/occupancy/octomap_io.h"
 #include "table.h"

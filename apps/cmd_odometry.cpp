@@ -11,13 +11,13 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
-#include "metricmap/datasets/kitti_sequence.h"
-#include "metricmap/registration/scan_registration.h"
 #include "metricmap/registration/deskew.h"
 #include "metricmap/registration/lidar_odometry.h"
+#include "metricmap/registration/scan_registration.h"
 #include "table.h"
 
 namespace metricmap::cli {

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <memory>
 #include <sstream>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 #include "cli_common.h"
@@ -17,7 +18,7 @@
 #include "metricmap/io/input_file.h"
 #include "metricmap/io/laser_scan.h"
 #include "metricmap/octree/adaptive_octree.h"
-#include "view_scene.h"
+#include "viz_loader.h"
 
 namespace metricmap::cli {
 namespace {
@@ -60,7 +61,7 @@ void loadScanLog(const std::string& f, const ViewOptions& o, CloudRGB& out) {
 }
 
 /// Segments of scan --scan from `metricmap lines --format json`.
-std::vector<DrawnSegment> readSegments(const std::string& path, long long scan) {
+std::vector<viz::DrawnSegment> readSegments(const std::string& path, long long scan) {
   requireRegularFile(path);
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open");
@@ -73,7 +74,7 @@ std::vector<DrawnSegment> readSegments(const std::string& path, long long scan) 
         });
     for (const auto& s : j.at("scans")) {
       if (s.at("scan").get<long long>() != scan) continue;
-      std::vector<DrawnSegment> out;
+      std::vector<viz::DrawnSegment> out;
       for (const auto& seg : s.at("segments")) {
         out.push_back({Eigen::Vector2d(seg.at("start").at(0).get<double>(),
                                        seg.at("start").at(1).get<double>()),
@@ -127,8 +128,8 @@ void run(const ViewOptions& o) {
     }
     *cloud += part;
   }
-  const std::vector<DrawnSegment> segments =
-      o.segments.empty() ? std::vector<DrawnSegment>() : readSegments(o.segments, o.scan);
+  const std::vector<viz::DrawnSegment> segments =
+      o.segments.empty() ? std::vector<viz::DrawnSegment>() : readSegments(o.segments, o.scan);
   if (!segments.empty()) {
     // Segments live in a scan's plane: look at it from above.
     title_suffix =
@@ -137,7 +138,7 @@ void run(const ViewOptions& o) {
   std::ostringstream title;
   title << (o.files.size() == 1 ? o.files.front() : std::to_string(o.files.size()) + " files")
         << " | " << cloud->size() << " points";
-  std::vector<CountedBox> boxes;
+  std::vector<viz::CountedBox> boxes;
   std::vector<double> point_counts;
   if (o.octree) {
     AdaptiveOctree<pcl::PointXYZRGB> octree;
@@ -170,18 +171,21 @@ void run(const ViewOptions& o) {
     title << " | grid cell " << o.cell_size << ": " << grid.getStatistics().occupied_cells
           << " occupied cells";
   }
-  SceneOptions so;
+  viz::ViewRequest request;
+  viz::SceneOptions& so = request.options;
   so.title = title.str() + title_suffix;
   // A 2D scan is flat: height colouring would paint it one colour; use its light grey.
   so.color_by = scan_logs_only && o.color_by == "height" ? "rgb" : o.color_by;
   so.up_axis = o.up == "x" ? 0 : (o.up == "y" ? 1 : 2);
   so.camera = segments.empty() ? o.camera : "top";
-  const Scene scene = buildScene(*cloud, point_counts, boxes, so, segments);
-  if (!o.screenshot.empty()) {
-    writeScreenshot(scene, width, height, o.screenshot);
-  } else {
-    runInteractive(scene, width, height);
-  }
+  request.cloud = cloud.get();
+  request.point_counts = std::move(point_counts);
+  request.boxes = std::move(boxes);
+  request.segments = segments;
+  request.width = width;
+  request.height = height;
+  request.screenshot = o.screenshot;
+  drawingModule().show(request);
 }
 
 }  // namespace

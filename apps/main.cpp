@@ -7,8 +7,6 @@
 #include <pcl/console/print.h>
 #include <CLI/CLI.hpp>
 
-#include <vtkObject.h>
-
 #include "cli_common.h"
 #include "commands.h"
 #include "metricmap/common/memory_budget.h"
@@ -17,7 +15,6 @@
 int main(int argc, char** argv) {
   // metricmap reports problems itself, one line each; PCL's own chatter would repeat them.
   pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
-  vtkObject::GlobalWarningDisplayOff();  // VTK's coloured log lines would repeat our message
 
   CLI::App app{"metricmap " METRICMAP_VERSION " - metric maps from range data"};
   app.set_version_flag("--version", METRICMAP_VERSION);

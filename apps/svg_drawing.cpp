@@ -1,6 +1,6 @@
 #include "svg_drawing.h"
 
-#include "scan_view.h"
+#include "metricmap/viz/scan_view.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +29,7 @@ std::string escape(const std::string& s) {
 
 std::string drawScanSvg(const pcl::PointCloud<pcl::PointXYZ>& scan,
                         const std::vector<LineSegment>& segments, const std::string& title) {
-  const ScanView v = ScanView::fit(scan, 800.0);
+  const viz::ScanView v = viz::ScanView::fit(scan, 800.0);
   const double size = v.size, margin = v.margin, scale = v.scale;
   auto sx = [&](double x) { return v.px(x); };
   auto sy = [&](double y) { return v.py(y); };
@@ -46,7 +46,7 @@ std::string drawScanSvg(const pcl::PointCloud<pcl::PointXYZ>& scan,
   }
   for (std::size_t k = 0; k < segments.size(); ++k) {
     const LineSegment& s = segments[k];
-    const std::array<int, 3> rgb = segmentColour(k);
+    const std::array<int, 3> rgb = viz::segmentColour(k);
     const std::string c = "rgb(" + std::to_string(rgb[0]) + "," + std::to_string(rgb[1]) + "," +
                           std::to_string(rgb[2]) + ")";
     os << "<line x1=\"" << sx(s.start.x()) << "\" y1=\"" << sy(s.start.y()) << "\" x2=\""

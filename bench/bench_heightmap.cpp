@@ -1,11 +1,11 @@
 // HeightMap binning of one 640x480 Kinect frame (the PCL grabber's, floor found by RANSAC
 // once outside the timing), single-threaded.
 #include "bench_common.h"
+#include "metricmap/camera/camera_intrinsics.h"
 #include "metricmap/camera/depth_to_cloud.h"
+#include "metricmap/io/depth_image.h"
 #include "metricmap/mapping/floor_fit.h"
 #include "metricmap/mapping/height_map.h"
-#include "metricmap/camera/camera_intrinsics.h"
-#include "metricmap/io/depth_image.h"
 
 namespace metricmap::bench {
 namespace {

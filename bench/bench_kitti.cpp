@@ -5,8 +5,8 @@
 #include <memory>
 
 #include "bench_common.h"
-#include "metricmap/io/cloud_reader.h"
 #include "metricmap/datasets/kitti_sequence.h"
+#include "metricmap/io/cloud_reader.h"
 #include "metricmap/mapping/scan_mapper.h"
 
 namespace metricmap::bench {

@@ -7,8 +7,8 @@
 #include <pcl/common/transforms.h>
 
 #include "bench_common.h"
-#include "metricmap/io/cloud_reader.h"
 #include "metricmap/datasets/kitti_sequence.h"
+#include "metricmap/io/cloud_reader.h"
 #include "metricmap/occupancy/log_odds_map.h"
 
 namespace metricmap::bench {

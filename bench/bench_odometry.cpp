@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "bench_common.h"
-#include "metricmap/io/cloud_reader.h"
 #include "metricmap/datasets/kitti_sequence.h"
-#include "metricmap/registration/scan_registration.h"
+#include "metricmap/io/cloud_reader.h"
 #include "metricmap/registration/lidar_odometry.h"
+#include "metricmap/registration/scan_registration.h"
 
 namespace metricmap::bench {
 namespace {

@@ -3,8 +3,8 @@
 #include <cstdint>
 
 #include "fuzz_common.h"
-#include "metricmap/exceptions.h"
 #include "metricmap/camera/camera_intrinsics.h"
+#include "metricmap/exceptions.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   for (const char* ext : {".xml", ".json"}) {

@@ -5,9 +5,9 @@
 #include <stdexcept>
 
 #include "fuzz_common.h"
+#include "metricmap/camera/depth_to_cloud.h"
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/exceptions.h"
-#include "metricmap/camera/depth_to_cloud.h"
 #include "metricmap/io/depth_image.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -7,9 +7,9 @@
 
 #include "fuzz_common.h"
 #include "metricmap/common/memory_budget.h"
+#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
-#include "metricmap/datasets/kitti_sequence.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const bool init = [] {

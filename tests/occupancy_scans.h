@@ -5,8 +5,8 @@
 
 #include <pcl/common/transforms.h>
 
-#include "metricmap/io/cloud_reader.h"
 #include "metricmap/datasets/kitti_sequence.h"
+#include "metricmap/io/cloud_reader.h"
 #include "test_data.h"
 
 namespace metricmap::test {

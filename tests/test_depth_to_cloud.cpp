@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "metricmap/exceptions.h"
-#include "metricmap/camera/depth_to_cloud.h"
 #include "metricmap/camera/camera_intrinsics.h"
+#include "metricmap/camera/depth_to_cloud.h"
+#include "metricmap/exceptions.h"
 #include "metricmap/io/depth_image.h"
 #include "test_data.h"
 

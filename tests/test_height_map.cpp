@@ -6,12 +6,12 @@
 
 #include <gtest/gtest.h>
 
-#include "metricmap/exceptions.h"
+#include "metricmap/camera/camera_intrinsics.h"
 #include "metricmap/camera/depth_to_cloud.h"
+#include "metricmap/exceptions.h"
+#include "metricmap/io/depth_image.h"
 #include "metricmap/mapping/floor_fit.h"
 #include "metricmap/mapping/height_map.h"
-#include "metricmap/camera/camera_intrinsics.h"
-#include "metricmap/io/depth_image.h"
 #include "test_data.h"
 
 namespace metricmap {

@@ -11,9 +11,9 @@
 
 #include <gtest/gtest.h>
 
+#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
-#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/mapping/occupancy_map_2d.h"
 #include "metricmap/registration/scan_registration.h"
 #include "test_data.h"

@@ -11,14 +11,14 @@
 
 #include <gtest/gtest.h>
 
+#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
-#include "metricmap/datasets/kitti_sequence.h"
-#include "metricmap/registration/scan_registration.h"
 #include "metricmap/registration/adaptive_threshold.h"
 #include "metricmap/registration/deskew.h"
 #include "metricmap/registration/lidar_odometry.h"
 #include "metricmap/registration/point_to_point_icp.h"
+#include "metricmap/registration/scan_registration.h"
 #include "metricmap/registration/se3.h"
 #include "metricmap/registration/voxel_downsample.h"
 #include "metricmap/registration/voxel_hash_map.h"

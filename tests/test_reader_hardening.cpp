@@ -10,9 +10,9 @@
 
 #include <gtest/gtest.h>
 
-#include "metricmap/exceptions.h"
-#include "metricmap/camera/depth_to_cloud.h"
 #include "metricmap/camera/camera_intrinsics.h"
+#include "metricmap/camera/depth_to_cloud.h"
+#include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/laser_scan.h"
 

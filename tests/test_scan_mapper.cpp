@@ -9,10 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/grid/occupancy_grid.h"
 #include "metricmap/io/cloud_reader.h"
-#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/mapping/scan_mapper.h"
 #include "test_data.h"
 

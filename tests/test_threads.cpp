@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/grid/occupancy_grid.h"
 #include "metricmap/io/cloud_reader.h"
-#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/octree/adaptive_octree.h"
 #include "test_data.h"
 

@@ -13,9 +13,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/laser_scan.h"
-#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/lines/split_and_merge.h"
 #include "metricmap/mapping/scan_mapper.h"
 

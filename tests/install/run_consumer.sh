@@ -12,3 +12,9 @@ cmake --build "$work/build" -j 2 >/dev/null
 out=$("$work/build/consumer" "$data")
 echo "$out"
 echo "$out" | grep -q "^2 segments; .*79149 points, 338 occupied cells, 1212 occupied leaves"
+# The installed command finds its drawing module in <libdir>/metricmap.
+data_root=$(dirname "$(dirname "$data")")
+"$work/prefix/bin/metricmap" lines "$data_root/pythonrobotics_lidar01/lidar01.csv" \
+  --png "$work/scan.png" >/dev/null
+test -s "$work/scan.png"
+echo "installed metricmap drew $work/scan.png through its drawing module"

@@ -8,6 +8,7 @@
 #include <unistd.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
+#include <vtkObject.h>
 #include <vtkPNGWriter.h>
 #include <vtkPNMWriter.h>
 
@@ -41,6 +42,7 @@ void writeImage(const std::string& path, int width, int height, int channels,
   if (pixels.size() != static_cast<std::size_t>(width) * height * channels) {
     throw std::invalid_argument(path + ": pixel buffer does not match the image size");
   }
+  vtkObject::GlobalWarningDisplayOff();  // failures are reported by the exception below
   vtkNew<vtkImageData> image;
   image->SetDimensions(width, height, 1);
   image->AllocateScalars(VTK_UNSIGNED_CHAR, channels);

@@ -13,8 +13,8 @@
 #include <Eigen/Geometry>
 
 #include "metricmap/mapping/occupancy_map_2d.h"
-#include "metricmap/registration/scan_registration.h"
 #include "metricmap/registration/lidar_odometry.h"
+#include "metricmap/registration/scan_registration.h"
 
 namespace metricmap {
 

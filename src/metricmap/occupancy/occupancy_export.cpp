@@ -64,8 +64,8 @@ void writeTrinaryMapServer(const TrinaryMap& map, const std::string& pgm_path,
   if (map.width == 0) throw std::invalid_argument("the trinary map is empty");
   MapServerFiles files = mapServerFiles(pgm_path);
   files.preview_png = preview_png;
-  writeMapServer({map.width, map.height, map.resolution, map.origin_x, map.origin_y, map.cells, true},
-                 files);
+  writeMapServer(
+      {map.width, map.height, map.resolution, map.origin_x, map.origin_y, map.cells, true}, files);
 }
 
 pcl::PointCloud<pcl::PointXYZ> occupiedCenters(const LogOddsMap& map) {

@@ -9,36 +9,19 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 #include <vtkSmartPointer.h>
-#include <Eigen/Core>
+
+#include "metricmap/viz/scene_types.h"
 
 class vtkRenderer;
 class vtkActor;
 
-namespace metricmap::cli {
-
-/// \brief An axis-aligned box with the number of points it holds.
-struct CountedBox {
-  Eigen::Vector3d min, max;
-  double count = 0;
-};
-
-struct SceneOptions {
-  std::string title;
-  std::string color_by = "height";  ///< height | rgb | count
-  int up_axis = 2;                  ///< 0 x, 1 y, 2 z
-  std::string camera = "iso";       ///< top | side | iso
-};
+namespace metricmap::viz {
 
 /// \brief The assembled scene; `points` and `boxes` can be toggled.
 struct Scene {
   vtkSmartPointer<vtkRenderer> renderer;
   vtkSmartPointer<vtkActor> points;
   vtkSmartPointer<vtkActor> boxes;  ///< null without boxes
-};
-
-/// \brief A 2D segment to draw at z = 0 (from `metricmap lines --format json`).
-struct DrawnSegment {
-  Eigen::Vector2d start, end;
 };
 
 /// \brief Build the scene. `point_counts` (same length as the cloud, or empty) colours points
@@ -54,4 +37,4 @@ void writeScreenshot(const Scene& scene, int width, int height, const std::strin
 /// \brief Open an interactive window (h: help, p: points, c: cubes, r: reset view, q: quit).
 void runInteractive(const Scene& scene, int width, int height);
 
-}  // namespace metricmap::cli
+}  // namespace metricmap::viz

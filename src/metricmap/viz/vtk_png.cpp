@@ -1,4 +1,4 @@
-#include "vtk_png.h"
+#include "metricmap/viz/vtk_png.h"
 
 #include <cstdio>
 #include <stdexcept>
@@ -7,7 +7,7 @@
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 
-namespace metricmap::cli {
+namespace metricmap::viz {
 
 void writeVtkPng(vtkAlgorithmOutput* image, const std::string& path) {
   const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
@@ -21,4 +21,4 @@ void writeVtkPng(vtkAlgorithmOutput* image, const std::string& path) {
   }
 }
 
-}  // namespace metricmap::cli
+}  // namespace metricmap::viz

@@ -9,7 +9,7 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
-namespace metricmap::cli {
+namespace metricmap::viz {
 
 /// \brief Maps metres to drawing pixels (y up on screen); the sensor (origin) is always in view.
 struct ScanView {
@@ -63,4 +63,4 @@ inline std::array<int, 3> segmentColour(std::size_t k) {
           static_cast<int>((b + m) * 255)};
 }
 
-}  // namespace metricmap::cli
+}  // namespace metricmap::viz

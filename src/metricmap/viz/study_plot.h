@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-namespace metricmap::cli {
+namespace metricmap::viz {
 
 /// \brief One chart: a title and named series, one value per x category.
 struct PlotPanel {
@@ -21,4 +21,4 @@ struct PlotPanel {
 void writeStudyPlot(const std::string& path, const std::vector<std::string>& categories,
                     const std::vector<PlotPanel>& panels);
 
-}  // namespace metricmap::cli
+}  // namespace metricmap::viz

@@ -1,4 +1,4 @@
-#include "png_drawing.h"
+#include "metricmap/viz/scan_png.h"
 
 #include <cstdio>
 #include <stdexcept>
@@ -7,10 +7,10 @@
 #include <vtkImageCanvasSource2D.h>
 #include <vtkNew.h>
 
-#include "scan_view.h"
-#include "vtk_png.h"
+#include "metricmap/viz/scan_view.h"
+#include "metricmap/viz/vtk_png.h"
 
-namespace metricmap::cli {
+namespace metricmap::viz {
 
 void writeScanPng(const std::string& path, const pcl::PointCloud<pcl::PointXYZ>& scan,
                   const std::vector<LineSegment>& segments) {
@@ -54,4 +54,4 @@ void writeScanPng(const std::string& path, const pcl::PointCloud<pcl::PointXYZ>&
   writeVtkPng(canvas->GetOutputPort(), path);
 }
 
-}  // namespace metricmap::cli
+}  // namespace metricmap::viz

@@ -1,6 +1,6 @@
-#include "study_plot.h"
+#include "metricmap/viz/study_plot.h"
 
-#include "vtk_png.h"
+#include "metricmap/viz/vtk_png.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -22,7 +22,7 @@
 #include <vtkTextProperty.h>
 #include <vtkWindowToImageFilter.h>
 
-namespace metricmap::cli {
+namespace metricmap::viz {
 namespace {
 
 const unsigned char kColours[][3] = {{60, 110, 200}, {220, 90, 40}, {70, 160, 80}, {150, 80, 170}};
@@ -103,4 +103,4 @@ void writeStudyPlot(const std::string& path, const std::vector<std::string>& cat
   }
 }
 
-}  // namespace metricmap::cli
+}  // namespace metricmap::viz

@@ -1,6 +1,6 @@
-#include "view_scene.h"
+#include "metricmap/viz/view_scene.h"
 
-#include "vtk_png.h"
+#include "metricmap/viz/vtk_png.h"
 
 #include <cmath>
 #include <cstdio>
@@ -31,7 +31,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
-namespace metricmap::cli {
+namespace metricmap::viz {
 namespace {
 
 vtkSmartPointer<vtkLookupTable> rainbow(double lo, double hi) {
@@ -254,4 +254,4 @@ void runInteractive(const Scene& scene, int width, int height) {
   interactor->Start();
 }
 
-}  // namespace metricmap::cli
+}  // namespace metricmap::viz

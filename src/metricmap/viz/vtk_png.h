@@ -6,9 +6,9 @@
 
 class vtkAlgorithmOutput;
 
-namespace metricmap::cli {
+namespace metricmap::viz {
 
 /// \throws std::runtime_error naming the file when writing or renaming fails
 void writeVtkPng(vtkAlgorithmOutput* image, const std::string& path);
 
-}  // namespace metricmap::cli
+}  // namespace metricmap::viz

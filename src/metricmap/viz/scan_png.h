@@ -1,5 +1,5 @@
 #pragma once
-/// \file png_drawing.h
+/// \file scan_png.h
 /// \brief PNG drawing of a scan and its segments through VTK (vtkImageCanvasSource2D +
 /// vtkPNGWriter): points, segments in distinct colours, endpoints, sensor, a 1 m scale bar.
 
@@ -11,11 +11,11 @@
 
 #include "metricmap/lines/line_segment.h"
 
-namespace metricmap::cli {
+namespace metricmap::viz {
 
 /// \brief Write the drawing to `path` (through a temporary file and a rename).
 /// \throws std::runtime_error naming the file on failure
 void writeScanPng(const std::string& path, const pcl::PointCloud<pcl::PointXYZ>& scan,
                   const std::vector<LineSegment>& segments);
 
-}  // namespace metricmap::cli
+}  // namespace metricmap::viz

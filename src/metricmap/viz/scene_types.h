@@ -1,0 +1,29 @@
+#pragma once
+/// \file scene_types.h
+/// \brief What a 3D view shows, without VTK: boxes with counts, 2D segments, view options.
+
+#include <string>
+
+#include <Eigen/Core>
+
+namespace metricmap::viz {
+
+/// \brief An axis-aligned box with the number of points it holds.
+struct CountedBox {
+  Eigen::Vector3d min, max;
+  double count = 0;
+};
+
+struct SceneOptions {
+  std::string title;
+  std::string color_by = "height";  ///< height | rgb | count
+  int up_axis = 2;                  ///< 0 x, 1 y, 2 z
+  std::string camera = "iso";       ///< top | side | iso
+};
+
+/// \brief A 2D segment to draw at z = 0 (from `metricmap lines --format json`).
+struct DrawnSegment {
+  Eigen::Vector2d start, end;
+};
+
+}  // namespace metricmap::viz
