@@ -1,6 +1,7 @@
 #include "camera_options.h"
 
 #include "cli_common.h"
+#include "metricmap/camera/depth_to_cloud.h"
 
 namespace metricmap::cli {
 
@@ -44,9 +45,7 @@ CameraIntrinsics resolveIntrinsics(const CameraOptions& o, const DepthImage& dep
 
 double resolveDepthScale(const CameraOptions& o, const CameraIntrinsics& k,
                          const DepthImage& depth) {
-  if (o.depth_scale > 0.0) return o.depth_scale;
-  if (k.depth_scale > 0.0) return k.depth_scale;
-  return depth.kind == "tiff" ? 0.001 : 0.0002;
+  return depthScaleFor(depth, k, o.depth_scale);
 }
 
 }  // namespace metricmap::cli

@@ -7,6 +7,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "metricmap/grid/occupancy_grid.h"
+#include "metricmap/io/cell_csv.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/output_set.h"
 #include "stats_json.h"
@@ -21,17 +22,6 @@ struct GridOptions {
   std::string origin = "cloud-min";
   std::string out, cells, format = "table", pcd_format = "binary";
 };
-
-std::string cellsCsv(const std::vector<GridCell>& cells) {
-  std::ostringstream os;
-  os.precision(9);
-  os << "ix,iy,iz,count,mean_x,mean_y,mean_z\n";
-  for (const GridCell& c : cells) {
-    os << c.index[0] << "," << c.index[1] << "," << c.index[2] << "," << c.count << ","
-       << c.mean.x() << "," << c.mean.y() << "," << c.mean.z() << "\n";
-  }
-  return os.str();
-}
 
 void runGrid(const GridOptions& o) {
   const LoadedCloud loaded = loadTimed(o.file);
@@ -48,7 +38,7 @@ void runGrid(const GridOptions& o) {
 
   OutputSet outputs;
   if (!o.out.empty()) savePcdAtomic(outputs.stage(o.out), means, parsePcdFormat(o.pcd_format));
-  if (!o.cells.empty()) writeTextAtomic(outputs.stage(o.cells), cellsCsv(grid.getCells()));
+  if (!o.cells.empty()) writeTextAtomic(outputs.stage(o.cells), gridCellsCsv(grid.getCells()));
   outputs.commit();
 
   const GridStatistics& s = grid.getStatistics();

@@ -16,6 +16,7 @@
 #include "metricmap/io/array_writers.h"
 #include "metricmap/io/input_file.h"
 #include "metricmap/io/output_set.h"
+#include "metricmap/io/trajectory.h"
 #include "metricmap/mapping/floor_fit.h"
 #include "metricmap/mapping/height_map.h"
 #include "table.h"
@@ -54,47 +55,6 @@ Eigen::Isometry3d poseFromMatrix(const std::string& text) {
   Eigen::Isometry3d pose;
   pose.matrix() = t;
   return pose;
-}
-
-/// TUM trajectory: "timestamp tx ty tz qx qy qz qw", camera -> world; frame k takes line k.
-std::vector<Eigen::Isometry3d> readTrajectory(const std::string& path, std::size_t frames) {
-  requireRegularFile(path);
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open");
-  std::vector<Eigen::Isometry3d> poses;
-  std::string line;
-  for (std::size_t n = 1; std::getline(in, line) && poses.size() < frames; ++n) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.find_first_not_of(" \t") == std::string::npos || line[0] == '#') continue;
-    std::istringstream is(line);
-    double v[8];
-    std::string token;
-    for (double& x : v) {
-      try {
-        if (!(is >> token)) throw std::invalid_argument("too few numbers");
-        x = parseFiniteDouble(token, "value");
-      } catch (const std::invalid_argument&) {
-        throw InputError(path + ": line " + std::to_string(n) +
-                         " is not 'timestamp tx ty tz qx qy qz qw' (8 finite numbers)");
-      }
-    }
-    if (is >> token) {
-      throw InputError(path + ": line " + std::to_string(n) +
-                       " has more than 8 numbers ('timestamp tx ty tz qx qy qz qw')");
-    }
-    Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
-    if (q.norm() < 1e-9)
-      throw InputError(path + ": line " + std::to_string(n) + ": zero quaternion");
-    Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-    t.linear() = q.normalized().toRotationMatrix();
-    t.translation() = Eigen::Vector3d(v[1], v[2], v[3]);
-    poses.push_back(t);
-  }
-  if (poses.size() < frames) {
-    throw InputError(path + ": " + std::to_string(poses.size()) + " pose(s) for " +
-                     std::to_string(frames) + " frame(s)");
-  }
-  return poses;
 }
 
 std::vector<std::uint8_t> layerColour(std::size_t bin, std::size_t bins) {
@@ -168,7 +128,7 @@ void run(const HeightMapOptions& o) {
   HeightMap& map = *map_holder;
 
   std::vector<Eigen::Isometry3d> trajectory;
-  if (!o.trajectory.empty()) trajectory = readTrajectory(o.trajectory, o.depths.size());
+  if (!o.trajectory.empty()) trajectory = readTumTrajectory(o.trajectory, o.depths.size());
   nlohmann::json floors = nlohmann::json::array();
   double seconds = 0.0;
   for (std::size_t f = 0; f < o.depths.size(); ++f) {

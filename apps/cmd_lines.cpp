@@ -40,8 +40,6 @@ struct LinesOptions {
 constexpr double kDeg = M_PI / 180.0;
 
 ScanLog readLog(const LinesOptions& o) {
-  const bool csv = o.file.size() > 4 && o.file.compare(o.file.size() - 4, 4, ".csv") == 0;
-  ScanLog log;
   if (o.generic && o.preset.empty()) {
     try {
       validateScanLineFormat(o.scan_format);  // option values: a usage error
@@ -49,17 +47,10 @@ ScanLog readLog(const LinesOptions& o) {
       throw CLI::ValidationError("scan format", e.what());
     }
   }
-  if (!o.preset.empty() || o.generic) {
-    log = readScanLines(o.file, o.preset.empty() ? o.scan_format : urg04lxMinesFormat());
-  } else if (csv) {
-    log = readAngleRangeCsv(o.file);
-  } else if (looksLikeCarmen(o.file)) {
-    log = readCarmenLog(o.file);
-  } else {
-    throw InputError(o.file +
-                     ": cannot tell the log format (not .csv, no FLASER/ROBOTLASER1 lines); "
-                     "give --preset or --count");
-  }
+  const ScanLineFormat mines = urg04lxMinesFormat();
+  const ScanLineFormat* layout =
+      !o.preset.empty() ? &mines : (o.generic ? &o.scan_format : nullptr);
+  ScanLog log = readScanLog(o.file, layout);
   for (const std::string& w : log.warnings) std::cerr << "warning: " << w << "\n";
   return log;
 }

@@ -6,6 +6,7 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "metricmap/io/cell_csv.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/output_set.h"
 #include "metricmap/octree/adaptive_octree.h"
@@ -23,20 +24,6 @@ struct OctreeOptions {
   std::string out, leaves, format = "table", pcd_format = "binary";
 };
 
-std::string leavesCsv(const std::vector<OctreeNode>& nodes) {
-  std::ostringstream os;
-  os.precision(9);
-  os << "node,depth,min_x,min_y,min_z,max_x,max_y,max_z,count,mean_x,mean_y,mean_z\n";
-  for (std::size_t id = 0; id < nodes.size(); ++id) {
-    const OctreeNode& n = nodes[id];
-    if (!n.isLeaf()) continue;
-    os << id << "," << n.depth << "," << n.min.x() << "," << n.min.y() << "," << n.min.z() << ","
-       << n.max.x() << "," << n.max.y() << "," << n.max.z() << "," << n.count << "," << n.mean.x()
-       << "," << n.mean.y() << "," << n.mean.z() << "\n";
-  }
-  return os.str();
-}
-
 void runOctree(const OctreeOptions& o) {
   const LoadedCloud loaded = loadTimed(o.file);
   const auto& cloud = loaded.cloud;
@@ -53,7 +40,8 @@ void runOctree(const OctreeOptions& o) {
 
   OutputSet outputs;
   if (!o.out.empty()) savePcdAtomic(outputs.stage(o.out), means, parsePcdFormat(o.pcd_format));
-  if (!o.leaves.empty()) writeTextAtomic(outputs.stage(o.leaves), leavesCsv(octree.getNodes()));
+  if (!o.leaves.empty())
+    writeTextAtomic(outputs.stage(o.leaves), octreeLeavesCsv(octree.getNodes()));
   outputs.commit();
 
   const OctreeStatistics& s = octree.getStatistics();

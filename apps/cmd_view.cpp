@@ -6,18 +6,17 @@
 #include <sstream>
 #include <utility>
 
-#include <nlohmann/json.hpp>
 #include "cli_common.h"
 #include "commands.h"
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/common/parse_number.h"
 
 #include "metricmap/exceptions.h"
-#include "metricmap/grid/occupancy_grid.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/input_file.h"
 #include "metricmap/io/laser_scan.h"
-#include "metricmap/octree/adaptive_octree.h"
+#include "metricmap/io/lines_json.h"
+#include "metricmap/viz/scene_content.h"
 #include "viz_loader.h"
 
 namespace metricmap::cli {
@@ -37,14 +36,12 @@ using CloudRGB = pcl::PointCloud<pcl::PointXYZRGB>;
 
 /// Scan logs (.csv angle,range; CARMEN; --preset logs) become 2D clouds at z = 0.
 bool isScanLog(const std::string& f, const ViewOptions& o) {
-  return !o.preset.empty() || (f.size() > 4 && f.compare(f.size() - 4, 4, ".csv") == 0) ||
-         looksLikeCarmen(f);
+  return !o.preset.empty() || detectScanLog(f) != ScanLogKind::Unknown;
 }
 
 void loadScanLog(const std::string& f, const ViewOptions& o, CloudRGB& out) {
-  const ScanLog log = !o.preset.empty()    ? readScanLines(f, urg04lxMinesFormat())
-                      : looksLikeCarmen(f) ? readCarmenLog(f)
-                                           : readAngleRangeCsv(f);
+  const ScanLineFormat mines = urg04lxMinesFormat();
+  const ScanLog log = readScanLog(f, o.preset.empty() ? nullptr : &mines);
   if (static_cast<std::size_t>(o.scan) >= log.scans.size()) {
     throw std::invalid_argument("--scan " + std::to_string(o.scan) + " is out of range: " + f +
                                 " has " + std::to_string(log.scans.size()) + " scan(s)");
@@ -58,36 +55,6 @@ void loadScanLog(const std::string& f, const ViewOptions& o, CloudRGB& out) {
     q.r = q.g = q.b = 200;
     out.push_back(q);
   }
-}
-
-/// Segments of scan --scan from `metricmap lines --format json`.
-std::vector<viz::DrawnSegment> readSegments(const std::string& path, long long scan) {
-  requireRegularFile(path);
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open");
-  try {
-    // Deep nesting is refused while parsing (nlohmann's parser and destructor recurse).
-    const nlohmann::json j =
-        nlohmann::json::parse(in, [](int depth, nlohmann::json::parse_event_t, nlohmann::json&) {
-          if (depth > 32) throw std::invalid_argument("nested deeper than 32 levels");
-          return true;
-        });
-    for (const auto& s : j.at("scans")) {
-      if (s.at("scan").get<long long>() != scan) continue;
-      std::vector<viz::DrawnSegment> out;
-      for (const auto& seg : s.at("segments")) {
-        out.push_back({Eigen::Vector2d(seg.at("start").at(0).get<double>(),
-                                       seg.at("start").at(1).get<double>()),
-                       Eigen::Vector2d(seg.at("end").at(0).get<double>(),
-                                       seg.at("end").at(1).get<double>())});
-      }
-      return out;
-    }
-  } catch (const std::exception& e) {
-    throw InputError(path + ": not the JSON of metricmap lines (" +
-                     std::string(e.what()).substr(0, 60) + ")");
-  }
-  throw InputError(path + ": has no scan " + std::to_string(scan));
 }
 
 void run(const ViewOptions& o) {
@@ -128,8 +95,9 @@ void run(const ViewOptions& o) {
     }
     *cloud += part;
   }
-  const std::vector<viz::DrawnSegment> segments =
-      o.segments.empty() ? std::vector<viz::DrawnSegment>() : readSegments(o.segments, o.scan);
+  const std::vector<viz::DrawnSegment> segments = o.segments.empty()
+                                                      ? std::vector<viz::DrawnSegment>()
+                                                      : readLineSegmentsJson(o.segments, o.scan);
   if (!segments.empty()) {
     // Segments live in a scan's plane: look at it from above.
     title_suffix =
@@ -141,34 +109,18 @@ void run(const ViewOptions& o) {
   std::vector<viz::CountedBox> boxes;
   std::vector<double> point_counts;
   if (o.octree) {
-    AdaptiveOctree<pcl::PointXYZRGB> octree;
-    octree.setMaxPointsPerLeaf(static_cast<std::size_t>(o.max_points));
-    octree.setMinCellSize(o.min_cell_size);
-    octree.setInputCloud(cloud);
-    octree.compute();
-    point_counts.assign(cloud->size(), 0.0);
-    const auto& nodes = octree.getNodes();
-    for (std::size_t id = 0; id < nodes.size(); ++id) {
-      const OctreeNode& n = nodes[id];
-      if (!n.isLeaf() || (n.count == 0 && !o.show_empty)) continue;
-      boxes.push_back({n.min, n.max, static_cast<double>(n.count)});
-      for (int i : octree.getPointIndices(id)) point_counts[static_cast<std::size_t>(i)] = n.count;
-    }
-    const OctreeStatistics& s = octree.getStatistics();
+    const viz::OctreeBoxes ob = viz::octreeBoxes(cloud, static_cast<std::size_t>(o.max_points),
+                                                 o.min_cell_size, o.show_empty);
+    boxes = ob.boxes;
+    point_counts = ob.point_counts;
     title << " | octree max_points " << o.max_points << ", min_cell " << o.min_cell_size << ": "
-          << s.occupied_leaves << " occupied / " << s.leaf_nodes << " leaves";
+          << ob.statistics.occupied_leaves << " occupied / " << ob.statistics.leaf_nodes
+          << " leaves";
   }
   if (o.grid) {
-    OccupancyGrid<pcl::PointXYZRGB> grid;
-    grid.setCellSize(o.cell_size);
-    grid.setInputCloud(cloud);
-    grid.compute();
-    for (const GridCell& c : grid.getCells()) {
-      const Eigen::Vector3d lo = grid.getCellMin(c.index);
-      boxes.push_back(
-          {lo, lo + Eigen::Vector3d::Constant(o.cell_size), static_cast<double>(c.count)});
-    }
-    title << " | grid cell " << o.cell_size << ": " << grid.getStatistics().occupied_cells
+    const viz::GridBoxes gb = viz::gridBoxes(cloud, o.cell_size);
+    boxes.insert(boxes.end(), gb.boxes.begin(), gb.boxes.end());
+    title << " | grid cell " << o.cell_size << ": " << gb.statistics.occupied_cells
           << " occupied cells";
   }
   viz::ViewRequest request;

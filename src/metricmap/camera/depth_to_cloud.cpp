@@ -54,6 +54,12 @@ pcl::PointCloud<PointT> project(const DepthImage& depth, const CameraIntrinsics&
 
 }  // namespace
 
+double depthScaleFor(const DepthImage& depth, const CameraIntrinsics& k, double given) {
+  if (given > 0.0) return given;
+  if (k.depth_scale > 0.0) return k.depth_scale;
+  return depth.kind == "tiff" ? 0.001 : 0.0002;
+}
+
 pcl::PointCloud<pcl::PointXYZ> depthToCloud(const DepthImage& depth, const CameraIntrinsics& k,
                                             double depth_scale) {
   return project<pcl::PointXYZ>(depth, k, depth_scale, [](pcl::PointXYZ&, int, int) {});

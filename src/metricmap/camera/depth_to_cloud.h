@@ -10,6 +10,11 @@
 
 namespace metricmap {
 
+/// \brief Metres per raw depth unit: `given` when > 0, else the camera file's scale when it has
+/// one, else the convention of the image type: 16-bit TIFF in millimetres (0.001, PCL's
+/// grabbers), 16-bit PNG in units of 0.2 mm (0.0002, TUM RGB-D).
+double depthScaleFor(const DepthImage& depth, const CameraIntrinsics& k, double given = 0.0);
+
 /// \brief Organized cloud (width x height) in the camera optical frame (x right, y down,
 /// z forward): z = d * depth_scale, x = (u - cx) z / fx, y = (v - cy) z / fy; NaN where d = 0.
 /// \throws std::invalid_argument for depth_scale <= 0 / NaN or bad intrinsics

@@ -191,6 +191,28 @@ bool looksLikeCarmen(const std::string& path) {
   return false;
 }
 
+ScanLogKind detectScanLog(const std::string& path) {
+  requireRegularFile(path);
+  if (path.size() > 4 && path.compare(path.size() - 4, 4, ".csv") == 0)
+    return ScanLogKind::AngleRangeCsv;
+  return looksLikeCarmen(path) ? ScanLogKind::Carmen : ScanLogKind::Unknown;
+}
+
+ScanLog readScanLog(const std::string& path, const ScanLineFormat* lines_format) {
+  if (lines_format != nullptr) return readScanLines(path, *lines_format);
+  switch (detectScanLog(path)) {
+    case ScanLogKind::AngleRangeCsv:
+      return readAngleRangeCsv(path);
+    case ScanLogKind::Carmen:
+      return readCarmenLog(path);
+    case ScanLogKind::Unknown:
+      break;
+  }
+  throw InputError(path +
+                   ": cannot tell the log format (not .csv, no FLASER/ROBOTLASER1 lines); "
+                   "give its layout (metricmap lines: --preset or --count)");
+}
+
 ScanLog readCarmenLog(const std::string& path) {
   return readEachLine(path, [](const std::vector<std::string>& t, LaserScan& scan) {
     std::size_t n = 0;

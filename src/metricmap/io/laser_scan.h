@@ -62,6 +62,19 @@ ScanLog readCarmenLog(const std::string& path);
 /// \brief True when the file has FLASER or ROBOTLASER1 lines (checks the first 200 lines).
 bool looksLikeCarmen(const std::string& path);
 
+/// \brief The layout of a 2D scan log, told from the file when not given.
+enum class ScanLogKind { Unknown, AngleRangeCsv, Carmen };
+
+/// \brief .csv -> AngleRangeCsv; FLASER/ROBOTLASER1 lines -> Carmen; else Unknown (a
+/// scan-per-line log needs its ScanLineFormat). \throws InputError for a file that is not a
+/// readable regular file
+ScanLogKind detectScanLog(const std::string& path);
+
+/// \brief Read a scan log: with `lines_format`, one scan per line in that layout; without, the
+/// layout detectScanLog finds. \throws InputError naming the file when the layout cannot be
+/// told or the file is bad
+ScanLog readScanLog(const std::string& path, const ScanLineFormat* lines_format = nullptr);
+
 /// \brief Ordered cloud, one point per beam (x = r cos a, y = r sin a, z = 0; NaN if invalid).
 pcl::PointCloud<pcl::PointXYZ> scanToCloud(const LaserScan& scan);
 

@@ -25,8 +25,8 @@ void show(const ViewRequest& r) {
 
 extern "C" const metricmap::viz::Module* metricmap_viz_module() {
   vtkObject::GlobalWarningDisplayOff();  // the module's callers report failures in one line
-  static const metricmap::viz::Module module{metricmap::viz::kModuleAbi,
-                                             &metricmap::viz::writeScanPng,
-                                             &metricmap::viz::writeStudyPlot, &metricmap::viz::show};
+  static const metricmap::viz::Module module{
+      metricmap::viz::kModuleAbi, &metricmap::viz::writeScanPng, &metricmap::viz::writeStudyPlot,
+      &metricmap::viz::show};
   return &module;
 }
