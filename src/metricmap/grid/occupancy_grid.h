@@ -100,6 +100,7 @@ class OccupancyGrid : public pcl::Filter<PointT> {
 #ifdef METRICMAP_NO_PRECOMPILE
 #include "metricmap/grid/impl/occupancy_grid.hpp"
 #else
+// The library instantiates every type of PCL_XYZ_POINT_TYPES; these three are the common ones.
 #include <pcl/point_types.h>
 extern template class metricmap::OccupancyGrid<pcl::PointXYZ>;
 extern template class metricmap::OccupancyGrid<pcl::PointXYZI>;

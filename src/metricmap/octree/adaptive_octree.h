@@ -100,6 +100,7 @@ class AdaptiveOctree : public pcl::Filter<PointT> {
 #ifdef METRICMAP_NO_PRECOMPILE
 #include "metricmap/octree/impl/adaptive_octree.hpp"
 #else
+// The library instantiates every type of PCL_XYZ_POINT_TYPES; these three are the common ones.
 #include <pcl/point_types.h>
 extern template class metricmap::AdaptiveOctree<pcl::PointXYZ>;
 extern template class metricmap::AdaptiveOctree<pcl::PointXYZI>;
