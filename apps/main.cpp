@@ -44,12 +44,14 @@ int main(int argc, char** argv) {
   metricmap::cli::addOccupancyCommand(app);
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
-    for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->check_name(argv[1]);
+    std::string names;  // from the registered commands, in registration order
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      known = known || sub->check_name(argv[1]);
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+    }
     if (!known) {
-      std::cerr << "metricmap: usage: unknown subcommand '" << argv[1]
-                << "' (info, grid, octree, compare, lines, depth-to-cloud, heightmap, kitti, view, "
-                   "occupancy, odometry; see "
-                   "--help)\n";
+      std::cerr << "metricmap: usage: unknown subcommand '" << argv[1] << "' (" << names
+                << "; see --help)\n";
       return 2;
     }
   }
