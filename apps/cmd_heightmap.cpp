@@ -32,8 +32,9 @@ struct HeightMapOptions {
   double camera_height = NAN, pitch_deg = 0.0, yaw_deg = 0.0;
   std::string pose_matrix, trajectory, out_prefix, format = "json";
   bool auto_floor = false;
-  double resolution = 0.05, floor_distance = 0.02;
-  long long map_size = 0, obstacle_threshold = 1;
+  double resolution = HeightMapParams{}.resolution, floor_distance = 0.02;
+  long long map_size = static_cast<long long>(HeightMapParams{}.map_size);
+  long long obstacle_threshold = HeightMapParams{}.obstacle_threshold;
   std::string z_bins;
 };
 
@@ -203,7 +204,7 @@ void addHeightMapCommand(CLI::App& app) {
   sub->add_option("--trajectory", o->trajectory,
                   "TUM trajectory (timestamp tx ty tz qx qy qz qw), one line per frame, in order");
   sub->add_flag("--auto-floor", o->auto_floor,
-                "Fit the floor (pcl::SACSegmentation) and measure heights from it");
+                "Fit the floor (RANSAC plane, PCL sample_consensus) and measure heights from it");
   sub->add_option("--resolution", o->resolution, "Cell edge, metres")
       ->required()
       ->check(kFinitePositive);

@@ -1,6 +1,7 @@
 #pragma once
 /// \file floor_fit.h
-/// \brief The floor plane of a camera-frame cloud, with pcl::SACSegmentation.
+/// \brief The floor plane of a camera-frame cloud, by RANSAC (PCL sample_consensus), as
+/// pcl::SACSegmentation computes it.
 
 #include <cstddef>
 
