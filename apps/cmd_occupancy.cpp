@@ -21,6 +21,7 @@
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/occupancy/occupancy_export.h"
 #include "metricmap/occupancy/octomap_io.h"
+#include "octomap_quiet.h"
 #include "table.h"
 
 namespace metricmap::cli {
@@ -75,43 +76,6 @@ void requireViewpoint(const std::string& path) {
     if (line.rfind("DATA", 0) == 0) break;
   }
   throw InputError(path + ": no VIEWPOINT line: the sensor pose (origin of the beams) is unknown");
-}
-
-/// liboctomap reports its progress on stderr (" done.", "Reading binary octree ..."); the
-/// command's stderr is for its own one-line errors, so stderr is muted while liboctomap runs.
-class MuteStderr {
- public:
-  MuteStderr() {
-    std::fflush(stderr);
-    std::cerr.flush();
-    saved_ = dup(STDERR_FILENO);
-    const int null = ::open("/dev/null", O_WRONLY);
-    if (saved_ >= 0 && null >= 0) dup2(null, STDERR_FILENO);
-    if (null >= 0) ::close(null);
-  }
-  ~MuteStderr() {
-    std::fflush(stderr);
-    std::cerr.flush();
-    if (saved_ >= 0) {
-      dup2(saved_, STDERR_FILENO);
-      ::close(saved_);
-    }
-  }
-  MuteStderr(const MuteStderr&) = delete;
-  MuteStderr& operator=(const MuteStderr&) = delete;
-
- private:
-  int saved_ = -1;
-};
-
-LogOddsMap readMap(const std::string& path) {
-  MuteStderr mute;
-  return readOctomap(path);
-}
-
-void writeMap(const LogOddsMap& map, const std::string& path) {
-  MuteStderr mute;
-  writeOctomap(map, path);
 }
 
 struct Totals {
@@ -201,7 +165,7 @@ void run(const OccupancyOptions& o) {
   }
   validateLogOddsParams(params);
   auto t = std::chrono::steady_clock::now();
-  LogOddsMap map = from_file ? readMap(o.inputs[0]) : LogOddsMap(params);
+  LogOddsMap map = from_file ? readOctomapQuietly(o.inputs[0]) : LogOddsMap(params);
   if (from_file) tot.load_s = secondsSince(t);
   if (!from_file) castScans(o, map, tot);
 
@@ -209,8 +173,8 @@ void run(const OccupancyOptions& o) {
   t = std::chrono::steady_clock::now();
   TrinaryMap trinary;
   if (!o.out_map.empty()) trinary = projectBand(map, band.first, band.second);
-  if (!o.out_bt.empty()) writeMap(map, o.out_bt);
-  if (!o.out_ot.empty()) writeMap(map, o.out_ot);
+  if (!o.out_bt.empty()) writeOctomapQuietly(map, o.out_bt);
+  if (!o.out_ot.empty()) writeOctomapQuietly(map, o.out_ot);
   if (!o.out_cloud.empty())
     savePcdAtomic(o.out_cloud, occupiedCenters(map), parsePcdFormat(o.pcd_format));
   if (!o.out_map.empty()) writeTrinaryMapServer(trinary, o.out_map, o.map_preview);

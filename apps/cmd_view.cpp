@@ -16,7 +16,9 @@
 #include "metricmap/io/input_file.h"
 #include "metricmap/io/laser_scan.h"
 #include "metricmap/io/lines_json.h"
+#include "metricmap/occupancy/occupancy_export.h"
 #include "metricmap/viz/scene_content.h"
+#include "octomap_quiet.h"
 #include "viz_loader.h"
 
 namespace metricmap::cli {
@@ -24,7 +26,7 @@ namespace {
 
 struct ViewOptions {
   std::vector<std::string> files;
-  bool octree = false, grid = false, show_empty = false;
+  bool octree = false, grid = false, show_empty = false, free = false;
   long long max_points = 100;
   float min_cell_size = 1.0f, cell_size = 1.0f;
   std::string color_by = "height", screenshot, window_size = "1280x800", camera = "iso", up = "z";
@@ -57,6 +59,25 @@ void loadScanLog(const std::string& f, const ViewOptions& o, CloudRGB& out) {
   }
 }
 
+bool isOctomapFile(const std::string& f) {
+  const auto dot = f.find_last_of('.');
+  const std::string ext = dot == std::string::npos ? "" : f.substr(dot);
+  return ext == ".bt" || ext == ".ot";
+}
+
+/// OctoMap .bt/.ot: occupied voxels (and free ones with --free) as cubes.
+void addOctomap(const std::string& f, bool with_free, viz::ViewRequest& request) {
+  const LogOddsMap map = readOctomapQuietly(f);
+  if (request.occupied.size > 0 && request.occupied.size != map.resolution()) {
+    throw InputError(f + ": resolution " + std::to_string(map.resolution()) +
+                     " differs from the other map's " + std::to_string(request.occupied.size));
+  }
+  request.occupied.size = request.free.size = map.resolution();
+  for (const auto& c : voxelCenters(map, true)) request.occupied.centers.push_back(c);
+  if (with_free)
+    for (const auto& c : voxelCenters(map, false)) request.free.centers.push_back(c);
+}
+
 void run(const ViewOptions& o) {
   int width = 0, height = 0;
   const std::size_t x = o.window_size.find('x');
@@ -81,12 +102,15 @@ void run(const ViewOptions& o) {
         "no X display: set DISPLAY, or run under xvfb-run (--screenshot renders offscreen but "
         "still needs an X server)");
   }
+  viz::ViewRequest request;
   auto cloud = std::make_shared<CloudRGB>();
   std::string title_suffix;
   bool scan_logs_only = true;
   for (const std::string& f : o.files) {
     CloudRGB part;
-    if (isScanLog(f, o)) {
+    if (isOctomapFile(f)) {
+      addOctomap(f, o.free, request);
+    } else if (isScanLog(f, o)) {
       loadScanLog(f, o, part);
     } else {
       scan_logs_only = false;
@@ -105,7 +129,12 @@ void run(const ViewOptions& o) {
   }
   std::ostringstream title;
   title << (o.files.size() == 1 ? o.files.front() : std::to_string(o.files.size()) + " files")
-        << " | " << cloud->size() << " points";
+        << (cloud->empty() ? "" : " | " + std::to_string(cloud->size()) + " points");
+  if (request.occupied.size > 0) {
+    title << " | " << request.occupied.centers.size() << " occupied";
+    if (o.free) title << ", " << request.free.centers.size() << " free";
+    title << " voxels of " << request.occupied.size << " m";
+  }
   std::vector<viz::CountedBox> boxes;
   std::vector<double> point_counts;
   if (o.octree) {
@@ -123,7 +152,6 @@ void run(const ViewOptions& o) {
     title << " | grid cell " << o.cell_size << ": " << gb.statistics.occupied_cells
           << " occupied cells";
   }
-  viz::ViewRequest request;
   viz::SceneOptions& so = request.options;
   so.title = title.str() + title_suffix;
   // A 2D scan is flat: height colouring would paint it one colour; use its light grey.
@@ -145,7 +173,9 @@ void run(const ViewOptions& o) {
 void addViewCommand(CLI::App& app) {
   auto o = std::make_shared<ViewOptions>();
   CLI::App* sub = app.add_subcommand("view", "3D view of points with octree leaves or grid cells");
-  sub->add_option("files", o->files, "Point clouds (.pcd, .ply, .bin); several are merged")
+  sub->add_option("files", o->files,
+                  "Point clouds (.pcd, .ply, .bin), scan logs or OctoMap maps (.bt, .ot); several "
+                  "are merged")
       ->required();
   sub->add_flag("--octree", o->octree, "Draw the adaptive octree's leaves");
   sub->add_option("--max-points", o->max_points, "Octree: split above this many points")
@@ -159,6 +189,7 @@ void addViewCommand(CLI::App& app) {
       ->check(kFinitePositive)
       ->capture_default_str();
   sub->add_flag("--show-empty", o->show_empty, "Also draw empty octree leaves");
+  sub->add_flag("--free", o->free, "OctoMap files: also draw free voxels (translucent)");
   sub->add_option("--color-by", o->color_by, "Point colours")
       ->check(CLI::IsMember({"height", "rgb", "count"}))
       ->capture_default_str();

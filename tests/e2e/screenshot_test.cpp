@@ -132,6 +132,32 @@ int main(int argc, char** argv) {
   }
   if (f != nullptr) std::fclose(f);
 
+  // An OctoMap file: occupied voxels as cubes coloured by height; --free adds translucent ones.
+  const std::string bt = std::string(argv[2]) + "/octomap_geb079/geb079.bt";
+  const std::string occ_png = std::string(argv[3]) + "/view_bt.png",
+                    free_png = std::string(argv[3]) + "/view_bt_free.png";
+  if (std::system(
+          (mm + " view " + bt + " --window-size 640x480 --screenshot " + occ_png).c_str()) != 0 ||
+      std::system((mm + " view " + bt + " --free --window-size 640x480 --screenshot " + free_png)
+                      .c_str()) != 0) {
+    std::cerr << "FAIL: view of an OctoMap file\n";
+    ++failures;
+  } else {
+    const Picture v0 = read(occ_png), v1 = read(free_png);
+    std::set<int> hues;
+    for (std::size_t i = 0; i + 2 < v0.rgb.size(); i += 3)
+      hues.insert(v0.rgb[i] << 16 | v0.rgb[i + 1] << 8 | v0.rgb[i + 2]);
+    std::size_t diff = 0;
+    for (std::size_t i = 0; i < v0.rgb.size() && i < v1.rgb.size(); ++i)
+      diff += v0.rgb[i] != v1.rgb[i];
+    std::cout << "octomap: " << hues.size() << " colours; free voxels changed " << diff / 3
+              << " pixel channels/3\n";
+    if (hues.size() < 50 || diff < v0.rgb.size() / 100) {
+      std::cerr << "FAIL: the OctoMap view looks blank or --free changed nothing\n";
+      ++failures;
+    }
+  }
+
   std::size_t changed = 0;
   for (std::size_t i = 0; i < a.rgb.size() && i < b.rgb.size(); ++i)
     changed += a.rgb[i] != b.rgb[i];

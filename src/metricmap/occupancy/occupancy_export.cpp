@@ -68,6 +68,14 @@ void writeTrinaryMapServer(const TrinaryMap& map, const std::string& pgm_path,
       {map.width, map.height, map.resolution, map.origin_x, map.origin_y, map.cells, true}, files);
 }
 
+std::vector<Eigen::Vector3d> voxelCenters(const LogOddsMap& map, bool occupied) {
+  std::vector<Eigen::Vector3d> out;
+  map.forEachKnown([&](const VoxelKey& k, float l) {
+    if (map.isOccupied(l) == occupied) out.push_back(map.centerOf(k));
+  });
+  return out;
+}
+
 pcl::PointCloud<pcl::PointXYZ> occupiedCenters(const LogOddsMap& map) {
   pcl::PointCloud<pcl::PointXYZ> cloud;
   map.forEachKnown([&](const VoxelKey& k, float l) {

@@ -39,6 +39,9 @@ TrinaryMap projectBand(const LogOddsMap& map, double z_min, double z_max);
 void writeTrinaryMapServer(const TrinaryMap& map, const std::string& pgm_path,
                            const std::string& preview_png = "");
 
+/// \brief The centres of the occupied voxels (`occupied` true) or of the free ones.
+std::vector<Eigen::Vector3d> voxelCenters(const LogOddsMap& map, bool occupied);
+
 /// \brief The centres of the occupied voxels.
 pcl::PointCloud<pcl::PointXYZ> occupiedCenters(const LogOddsMap& map);
 

@@ -12,7 +12,8 @@ namespace {
 
 void show(const ViewRequest& r) {
   if (r.cloud == nullptr) throw std::invalid_argument("view: no cloud");
-  const Scene scene = buildScene(*r.cloud, r.point_counts, r.boxes, r.options, r.segments);
+  const Scene scene =
+      buildScene(*r.cloud, r.point_counts, r.boxes, r.options, r.segments, r.occupied, r.free);
   if (!r.screenshot.empty()) {
     writeScreenshot(scene, r.width, r.height, r.screenshot);
   } else {

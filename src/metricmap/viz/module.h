@@ -23,13 +23,15 @@ struct ViewRequest {
   std::vector<double> point_counts;
   std::vector<CountedBox> boxes;
   std::vector<DrawnSegment> segments;
+  VoxelLayer occupied;  ///< solid cubes coloured by height
+  VoxelLayer free;      ///< translucent grey cubes
   SceneOptions options;
   int width = 1024, height = 768;
   std::string screenshot;
 };
 
 /// \brief Bumped whenever Module or a type it passes changes layout.
-constexpr int kModuleAbi = 1;
+constexpr int kModuleAbi = 2;
 
 /// \brief The module's entry points; each throws std::runtime_error naming the file it could
 /// not write.

@@ -3,6 +3,7 @@
 /// \brief What a 3D view shows, without VTK: boxes with counts, 2D segments, view options.
 
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -24,6 +25,12 @@ struct SceneOptions {
 /// \brief A 2D segment to draw at z = 0 (from `metricmap lines --format json`).
 struct DrawnSegment {
   Eigen::Vector2d start, end;
+};
+
+/// \brief Voxels of an occupancy map to draw as cubes of edge `size` (centres in the world).
+struct VoxelLayer {
+  std::vector<Eigen::Vector3d> centers;
+  double size = 0.0;
 };
 
 }  // namespace metricmap::viz

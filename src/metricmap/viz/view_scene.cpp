@@ -13,7 +13,9 @@
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCubeSource.h>
 #include <vtkDoubleArray.h>
+#include <vtkGlyph3DMapper.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
@@ -151,6 +153,43 @@ vtkSmartPointer<vtkActor> segmentActor(const std::vector<DrawnSegment>& segments
   return actor;
 }
 
+/// Voxels as cube glyphs (one polydata of centres, one cube source): coloured by height through
+/// `lut`, or in `grey` when lut is null; `opacity` < 1 for translucent layers.
+vtkSmartPointer<vtkActor> voxelActor(const VoxelLayer& layer, int up_axis, vtkLookupTable* lut,
+                                     double opacity) {
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkDoubleArray> height;
+  pts->Allocate(static_cast<vtkIdType>(layer.centers.size()));
+  for (const Eigen::Vector3d& c : layer.centers) {
+    pts->InsertNextPoint(c.x(), c.y(), c.z());
+    height->InsertNextValue(c[up_axis]);
+  }
+  vtkNew<vtkPolyData> poly;
+  poly->SetPoints(pts);
+  poly->GetPointData()->SetScalars(height);
+  vtkNew<vtkCubeSource> cube;
+  cube->SetXLength(layer.size);
+  cube->SetYLength(layer.size);
+  cube->SetZLength(layer.size);
+  vtkNew<vtkGlyph3DMapper> mapper;
+  mapper->SetInputData(poly);
+  mapper->SetSourceConnection(cube->GetOutputPort());
+  mapper->ScalingOff();
+  mapper->OrientOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  if (lut != nullptr) {
+    mapper->SetLookupTable(lut);
+    mapper->SetScalarRange(lut->GetTableRange());
+    mapper->SetScalarModeToUsePointData();
+  } else {
+    mapper->ScalarVisibilityOff();
+    actor->GetProperty()->SetColor(0.75, 0.75, 0.75);
+  }
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetOpacity(opacity);
+  return actor;
+}
+
 void placeCamera(vtkRenderer* r, const SceneOptions& o) {
   vtkCamera* cam = r->GetActiveCamera();
   Eigen::Vector3d up = Eigen::Vector3d::Zero();
@@ -180,7 +219,8 @@ void placeCamera(vtkRenderer* r, const SceneOptions& o) {
 
 Scene buildScene(const pcl::PointCloud<pcl::PointXYZRGB>& cloud, const std::vector<double>& counts,
                  const std::vector<CountedBox>& boxes, const SceneOptions& o,
-                 const std::vector<DrawnSegment>& segments) {
+                 const std::vector<DrawnSegment>& segments, const VoxelLayer& occupied,
+                 const VoxelLayer& free) {
   Scene s;
   s.renderer = vtkSmartPointer<vtkRenderer>::New();
   s.renderer->SetBackground(0.08, 0.08, 0.1);
@@ -200,6 +240,23 @@ Scene buildScene(const pcl::PointCloud<pcl::PointXYZRGB>& cloud, const std::vect
     s.renderer->AddActor2D(bar);
   }
   if (!segments.empty()) s.renderer->AddActor(segmentActor(segments));
+  if (!occupied.centers.empty()) {
+    double lo = 1e300, hi = -1e300;
+    for (const Eigen::Vector3d& c : occupied.centers) {
+      lo = std::min(lo, c[o.up_axis]);
+      hi = std::max(hi, c[o.up_axis]);
+    }
+    auto lut = rainbow(lo, hi);
+    s.boxes = voxelActor(occupied, o.up_axis, lut, 1.0);
+    s.renderer->AddActor(s.boxes);
+    vtkNew<vtkScalarBarActor> bar;
+    bar->SetLookupTable(lut);
+    bar->SetTitle("height");
+    bar->SetNumberOfLabels(4);
+    bar->SetMaximumWidthInPixels(70);
+    s.renderer->AddActor2D(bar);
+  }
+  if (!free.centers.empty()) s.renderer->AddActor(voxelActor(free, o.up_axis, nullptr, 0.12));
   vtkNew<vtkTextActor> title;
   title->SetInput(o.title.c_str());
   title->GetTextProperty()->SetFontSize(16);

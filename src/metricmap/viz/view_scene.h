@@ -28,7 +28,8 @@ struct Scene {
 /// by the count of their cell when color_by is "count".
 Scene buildScene(const pcl::PointCloud<pcl::PointXYZRGB>& cloud,
                  const std::vector<double>& point_counts, const std::vector<CountedBox>& boxes,
-                 const SceneOptions& options, const std::vector<DrawnSegment>& segments = {});
+                 const SceneOptions& options, const std::vector<DrawnSegment>& segments = {},
+                 const VoxelLayer& occupied = {}, const VoxelLayer& free = {});
 
 /// \brief Render offscreen at width x height and write a PNG (through a temporary file).
 /// \throws std::runtime_error naming the file
