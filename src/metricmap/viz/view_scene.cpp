@@ -1,5 +1,7 @@
 #include "metricmap/viz/view_scene.h"
 
+#include <algorithm>
+
 #include "metricmap/viz/vtk_png.h"
 
 #include <cmath>
@@ -241,12 +243,16 @@ Scene buildScene(const pcl::PointCloud<pcl::PointXYZRGB>& cloud, const std::vect
   }
   if (!segments.empty()) s.renderer->AddActor(segmentActor(segments));
   if (!occupied.centers.empty()) {
-    double lo = 1e300, hi = -1e300;
-    for (const Eigen::Vector3d& c : occupied.centers) {
-      lo = std::min(lo, c[o.up_axis]);
-      hi = std::max(hi, c[o.up_axis]);
-    }
-    auto lut = rainbow(lo, hi);
+    // Colours over the 2nd..98th height percentile: a few stray voxels far below the ground
+    // would otherwise paint the whole map one colour.
+    std::vector<double> h;
+    h.reserve(occupied.centers.size());
+    for (const Eigen::Vector3d& c : occupied.centers) h.push_back(c[o.up_axis]);
+    const std::size_t k_lo = h.size() / 50, k_hi = h.size() - 1 - h.size() / 50;
+    std::nth_element(h.begin(), h.begin() + static_cast<std::ptrdiff_t>(k_lo), h.end());
+    const double lo = h[k_lo];
+    std::nth_element(h.begin(), h.begin() + static_cast<std::ptrdiff_t>(k_hi), h.end());
+    auto lut = rainbow(lo, h[k_hi]);
     s.boxes = voxelActor(occupied, o.up_axis, lut, 1.0);
     s.renderer->AddActor(s.boxes);
     vtkNew<vtkScalarBarActor> bar;
