@@ -254,14 +254,18 @@ void buildGrid(const PointSpan& points, const GridParams& params, GridWorkspace&
   std::size_t total_runs = 0;
   for (std::size_t r : runs) total_runs += r;
   reserveHuge(result.cells, total_runs);
-  std::vector<std::vector<GridCell>> parts(threads > 1 ? threads - 1 : 0);
+  std::vector<std::vector<GridCell>>& parts = workspace.parts;
+  if (parts.size() < threads - 1) parts.resize(threads - 1);
   parallelRun(threads, [&](unsigned t) {
     std::vector<GridCell>& out = t == 0 ? result.cells : parts[t - 1];
-    if (t > 0) reserveHuge(out, runs[t]);
+    if (t > 0) {
+      out.clear();
+      reserveHuge(out, runs[t]);
+    }
     accumulateCells(points, sorter, L, cuts[t], cuts[t + 1], out);
   });
-  for (const std::vector<GridCell>& part : parts) {
-    result.cells.insert(result.cells.end(), part.begin(), part.end());
+  for (unsigned t = 1; t < threads; ++t) {
+    result.cells.insert(result.cells.end(), parts[t - 1].begin(), parts[t - 1].end());
   }
   GridStatistics& s = result.stats;
   s.points = bounds.finite;
