@@ -15,8 +15,11 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
+#include "metricmap/io/map_server.h"
 #include "metricmap/io/output_set.h"
 #include "metricmap/mapping/scan_mapper.h"
+#include "metricmap/occupancy/occupancy_export.h"
+#include "octomap_quiet.h"
 #include "table.h"
 
 namespace metricmap::cli {
@@ -26,6 +29,8 @@ struct KittiOptions {
   std::string root, sequence = "00", frames, world = "camera", out_cloud, out_map;
   std::string pcd_format = "binary", map_plane = "xz", format = "table", refine, perturb;
   std::string refine_target = "map", out_poses, poses = "file";
+  std::string out_octomap, out_trinary, band;  // 3D occupancy outputs
+  double occupancy_resolution = 0.0, occupancy_max_range = LogOddsParams{}.max_range;
   unsigned seed = 1;
   long long first = -1, count = 0, min_hits = 1;
   ScanMapperConfig mapper;  // ranges, voxel, height band, map resolution: its defaults
@@ -70,6 +75,21 @@ ScanMapperConfig mapperConfig(const KittiOptions& o, KittiWorld world) {
   if (c.registration.enabled) c.registration.refine.method = parseRefineMethod(o.refine);
   c.registration.target = parseRegistrationTarget(o.refine_target);
   c.odometry = o.poses == "odometry";
+  if (o.occupancy_resolution > 0.0) {
+    LogOddsParams p;
+    p.resolution = o.occupancy_resolution;
+    p.max_range = o.occupancy_max_range;
+    c.occupancy = p;
+  } else if (!o.out_octomap.empty() || !o.out_trinary.empty()) {
+    throw CLI::ValidationError("--occupancy-resolution",
+                               "--out-octomap and --out-trinary need the 3D occupancy map");
+  }
+  if (!o.out_trinary.empty() && world != KittiWorld::Velodyne) {
+    throw CLI::ValidationError("--out-trinary", "the band is along z: needs --world velodyne");
+  }
+  if (o.out_trinary.empty() != o.band.empty()) {
+    throw CLI::ValidationError("--band", "--out-trinary and --band go together");
+  }
   try {
     validateScanMapperConfig(c);
   } catch (const std::invalid_argument& e) {
@@ -106,6 +126,16 @@ nlohmann::json registrationJson(const KittiOptions& o, const std::vector<double>
           {"frames", entries},
           {"ate_before", err.ate_given},
           {"ate_after", err.ate_used},
+          {"seconds", seconds}};
+}
+
+nlohmann::json occupancyJson(const LogOddsMap* map, const std::vector<FrameReport>& reports) {
+  if (map == nullptr) return nullptr;
+  double seconds = 0.0;
+  for (const FrameReport& r : reports) seconds += r.seconds_occupancy;
+  return {{"resolution", map->resolution()},
+          {"occupied_voxels", map->occupiedVoxels()},
+          {"free_voxels", map->freeVoxels()},
           {"seconds", seconds}};
 }
 
@@ -197,6 +227,17 @@ void run(const KittiOptions& o) {
   if (!o.out_cloud.empty()) {
     savePcdAtomic(outputs.stage(o.out_cloud), global, parsePcdFormat(o.pcd_format));
   }
+  const LogOddsMap* occupancy = mapper.occupancy();
+  if (!o.out_octomap.empty()) writeOctomapQuietly(*occupancy, outputs.stage(o.out_octomap));
+  if (!o.out_trinary.empty()) {
+    const std::vector<double> band = parseDoubleList(o.band, "--band");
+    const TrinaryMap t = projectBand(*occupancy, band.at(0), band.at(1));
+    MapServerFiles files = mapServerFiles(o.out_trinary);
+    files.pgm = outputs.stage(files.pgm);
+    files.yaml = outputs.stage(files.yaml);
+    files.preview_png.clear();
+    writeMapServer({t.width, t.height, t.resolution, t.origin_x, t.origin_y, t.cells, true}, files);
+  }
   if (!o.out_map.empty()) {
     MapServerFiles files = mapServerFiles(o.out_map);
     for (std::string* path : {&files.pgm, &files.yaml, &files.preview_png, &files.heat_png}) {
@@ -241,7 +282,8 @@ void run(const KittiOptions& o) {
                            {"origin", {image.origin_x, image.origin_y, 0.0}},
                            {"cells_with_hits", mapper.map().cells()},
                            {"occupied_cells", occupied},
-                           {"min_hits", o.min_hits}}}})
+                           {"min_hits", o.min_hits}}},
+                         {"occupancy", occupancyJson(occupancy, reports)}})
                  .dump(2) +
              "\n",
          "");
@@ -328,6 +370,30 @@ void addKittiCommand(CLI::App& app) {
                   "needed (--refine still applies on top)")
       ->check(CLI::IsMember({"file", "odometry"}))
       ->capture_default_str();
+  sub->add_option("--occupancy-resolution", o->occupancy_resolution,
+                  "Also build the 3D log-odds occupancy map (ray casting, OctoMap's model) with "
+                  "voxels of this size (m)")
+      ->check(kFinitePositive);
+  sub->add_option("--occupancy-max-range", o->occupancy_max_range,
+                  "Beams longer than this are cut there and mark no hit (m)")
+      ->check(kFinitePositive)
+      ->capture_default_str();
+  sub->add_option("--out-octomap", o->out_octomap, "Write the 3D map: .bt or .ot (OctoMap)");
+  sub->add_option("--out-trinary", o->out_trinary,
+                  "Trinary map_server map (M.pgm + M.yaml) of the 3D map's --band (z, velodyne "
+                  "world): occupied 0, free 254, unknown 205");
+  sub->add_option("--band", o->band, "zmin,zmax of --out-trinary (m)")
+      ->check(CLI::Validator(
+          [](std::string& s) {
+            try {
+              const std::vector<double> b = parseDoubleList(s, "--band");
+              if (b.size() != 2 || b[0] > b[1]) return std::string("--band must be zmin,zmax");
+            } catch (const std::invalid_argument& e) {
+              return std::string(e.what());
+            }
+            return std::string();
+          },
+          "ZMIN,ZMAX"));
   addFormatOption(*sub, o->format, {"table", "json"});
   sub->callback([o] { run(*o); });
 }

@@ -22,6 +22,22 @@ occ=$(grep -o '"occupied": [0-9]*' "$out/run.json" | tail -1)
 check "bt read back: $occ" grep -q "$occ" "$out/back.json"
 check "bt read quietly" test ! -s "$out/back.err"
 
+# The mapping pipeline (metricmap kitti, ScanMapper) builds the same 3D map and trinary map as
+# metricmap occupancy from the same frames in the velodyne world: byte for byte.
+mkdir -p "$out/k"
+"$MM" kitti "$kitti" --frames 0-1 --world velodyne --occupancy-resolution 0.2 \
+  --occupancy-max-range 50 --out-octomap "$out/k/m.bt" --out-trinary "$out/k/m.pgm" \
+  --band -1.5,0.5 --format json >"$out/k/run.json"
+check "kitti .bt = occupancy .bt" cmp "$out/k/m.bt" "$out/m.bt"
+check "kitti trinary = occupancy trinary" cmp "$out/k/m.pgm" "$out/m.pgm"
+check "kitti yaml = occupancy yaml" cmp "$out/k/m.yaml" "$out/m.yaml"
+check "kitti json occupancy" grep -q '"occupied_voxels"' "$out/k/run.json"
+expect 2 "needs --world velodyne" -- "$MM" kitti "$kitti" --frames 0 --occupancy-resolution 0.2 \
+  --out-trinary "$out/bad.pgm" --band 0,1
+expect 2 "need the 3D occupancy map" -- "$MM" kitti "$kitti" --frames 0 --out-octomap "$out/bad.bt"
+expect 2 "go together" -- "$MM" kitti "$kitti" --frames 0 --world velodyne \
+  --occupancy-resolution 0.2 --out-trinary "$out/bad.pgm"
+
 # bad input: exit 1, one line, nothing written
 for r in 0 -0.2 nan; do
   expect 1 "resolution must be" -- "$MM" occupancy "$kitti" --frames 0 --resolution "$r" \

@@ -93,6 +93,7 @@ ScanMapper::ScanMapper(const ScanMapperConfig& config)
       global_(std::make_shared<Cloud>()),
       target_(std::make_shared<Cloud>()) {
   if (config.odometry) odometry_ = std::make_unique<LidarOdometry>(config.odometry_config);
+  if (config.occupancy) log_odds_ = std::make_unique<LogOddsMap>(*config.occupancy);
 }
 
 FrameReport ScanMapper::addScan(const Cloud& scan_in_sensor) {
@@ -158,6 +159,13 @@ FrameReport ScanMapper::addScan(const Cloud& scan_in_sensor, const Eigen::Isomet
     map_.add(band);
   }
   report.seconds_map = secondsSince(t);
+  if (log_odds_) {
+    t = std::chrono::steady_clock::now();
+    Cloud full_world;
+    pcl::transformPointCloud(scan_in_sensor, full_world, report.pose_used.matrix().cast<float>());
+    log_odds_->insertScan(full_world, report.pose_used.translation().cast<float>());
+    report.seconds_occupancy = secondsSince(t);
+  }
   if (config_.keep_global_cloud) *global_ += world;
   given_.push_back(pose);
   used_.push_back(report.pose_used);

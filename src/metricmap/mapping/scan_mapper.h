@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <pcl/point_cloud.h>
@@ -13,6 +14,7 @@
 #include <Eigen/Geometry>
 
 #include "metricmap/mapping/occupancy_map_2d.h"
+#include "metricmap/occupancy/log_odds_map.h"
 #include "metricmap/registration/lidar_odometry.h"
 #include "metricmap/registration/scan_registration.h"
 
@@ -57,6 +59,10 @@ struct ScanMapperConfig {
   LidarOdometryConfig odometry_config;
   /// World pose of the first scan's sensor for odometry poses (KITTI camera world: Tr).
   Eigen::Isometry3d odometry_origin = Eigen::Isometry3d::Identity();
+  /// Probabilistic 3D occupancy (LogOddsMap, OctoMap's sensor model): every point of each scan,
+  /// as given (no range band), cast from the sensor's position with the pose used. Off when
+  /// empty.
+  std::optional<LogOddsParams> occupancy;
 };
 
 /// \brief \throws std::invalid_argument naming the first bad parameter
@@ -74,6 +80,7 @@ struct FrameReport {
   bool converged = false;  ///< PCL's hasConverged of the last stage
   double fitness = 0.0;    ///< PCL's fitness score of the last stage
   double seconds_register = 0.0, seconds_transform = 0.0, seconds_map = 0.0;
+  double seconds_occupancy = 0.0;  ///< ray casting into the log-odds map (when on)
 };
 
 /// \brief Per-frame and RMS translation error of a trajectory against a reference.
@@ -109,6 +116,9 @@ class ScanMapper {
   /// \brief The odometry's result for the last scan added with addScan(scan).
   const OdometryResult& lastOdometry() const { return last_odometry_; }
 
+  /// \brief The log-odds map so far; null unless `occupancy` is configured.
+  const LogOddsMap* occupancy() const { return log_odds_.get(); }
+
   /// \brief The 2D hit map so far.
   const OccupancyMap2D& map() const { return map_; }
   /// \brief Cells of the map with at least `min_hits` hits.
@@ -136,6 +146,7 @@ class ScanMapper {
   std::vector<Eigen::Isometry3d> given_, used_;
   std::unique_ptr<LidarOdometry> odometry_;
   OdometryResult last_odometry_;
+  std::unique_ptr<LogOddsMap> log_odds_;
 };
 
 /// \brief The points of `scan` whose distance from the origin lies in [min_range, max_range].
