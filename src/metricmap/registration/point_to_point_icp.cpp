@@ -18,6 +18,7 @@ struct NeighbourCache {
   std::uint64_t key = ~std::uint64_t{0};
   int n = 0;
   const VoxelHashMap::Cell* cells[27];
+  VoxelHashMap::Offset offsets[27];
 };
 
 struct NormalEquations {
@@ -49,9 +50,9 @@ NormalEquations buildSystem(const std::vector<Eigen::Vector3d>& source, const Vo
     const std::uint64_t key = map.keyOf(w);
     if (key != c.key) {
       c.key = key;
-      c.n = map.neighbours(w, c.cells);
+      c.n = map.neighbours(w, c.cells, c.offsets);
     }
-    if (!VoxelHashMap::nearestIn(c.cells, c.n, w, threshold, q)) continue;
+    if (!map.nearestIn(c.cells, c.offsets, c.n, w, threshold, q)) continue;
     const Eigen::Vector3d r = rt * (w - q);
     const double e2 = r.squaredNorm() / kernel2;
     const double weight = 1.0 / ((1.0 + e2) * (1.0 + e2));

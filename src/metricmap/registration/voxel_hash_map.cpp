@@ -40,25 +40,40 @@ void VoxelHashMap::removeFar(const Eigen::Vector3d& origin, double radius) {
   }
 }
 
-int VoxelHashMap::neighbours(const Eigen::Vector3d& p, const Cell* out[27]) const {
+int VoxelHashMap::neighbours(const Eigen::Vector3d& p, const Cell* out[27],
+                             Offset offsets[27]) const {
   const Eigen::Array3i c = voxelOf(p, inv_voxel_);
   int n = 0;
   for (int dx = -1; dx <= 1; ++dx) {
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dz = -1; dz <= 1; ++dz) {
         const auto it = map_.find(packVoxel(c.x() + dx, c.y() + dy, c.z() + dz));
-        if (it != map_.end()) out[n++] = &it->second;
+        if (it == map_.end()) continue;
+        offsets[n] = {{static_cast<std::int8_t>(dx), static_cast<std::int8_t>(dy),
+                       static_cast<std::int8_t>(dz)}};
+        out[n++] = &it->second;
       }
     }
   }
   return n;
 }
 
-bool VoxelHashMap::nearestIn(const Cell* const* cells, int n, const Eigen::Vector3d& p,
-                             double max_distance, Eigen::Vector3d& q) {
+bool VoxelHashMap::nearestIn(const Cell* const* cells, const Offset* offsets, int n,
+                             const Eigen::Vector3d& p, double max_distance,
+                             Eigen::Vector3d& q) const {
+  // Squared distance from p to the faces of its voxel, below and above, per axis.
+  const Eigen::Array3d s = p.array() * inv_voxel_;
+  const Eigen::Array3d f = s - s.floor();
+  const Eigen::Array3d below = (f * voxel_).square(), above = ((1.0 - f) * voxel_).square();
   double best = max_distance * max_distance;
   bool found = false;
   for (int i = 0; i < n; ++i) {
+    double box = 0.0;
+    for (int a = 0; a < 3; ++a) {
+      box += offsets[i].d[a] < 0 ? below[a] : (offsets[i].d[a] > 0 ? above[a] : 0.0);
+    }
+    // A margin for rounding: skip only cells clearly farther than the best so far.
+    if (box > best * (1.0 + 1e-9) + 1e-12) continue;
     for (const Eigen::Vector3d& m : *cells[i]) {
       const double d2 = (m - p).squaredNorm();
       if (d2 < best) {
@@ -74,8 +89,9 @@ bool VoxelHashMap::nearestIn(const Cell* const* cells, int n, const Eigen::Vecto
 bool VoxelHashMap::nearest(const Eigen::Vector3d& p, double max_distance,
                            Eigen::Vector3d& q) const {
   const Cell* cells[27];
-  const int n = neighbours(p, cells);
-  return nearestIn(cells, n, p, max_distance, q);
+  Offset offsets[27];
+  const int n = neighbours(p, cells, offsets);
+  return nearestIn(cells, offsets, n, p, max_distance, q);
 }
 
 const std::vector<Eigen::Vector3d>* VoxelHashMap::voxelPoints(const Eigen::Vector3d& p) const {

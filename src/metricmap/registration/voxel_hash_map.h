@@ -28,6 +28,10 @@ class VoxelHashMap {
   bool nearest(const Eigen::Vector3d& p, double max_distance, Eigen::Vector3d& q) const;
 
   using Cell = std::vector<Eigen::Vector3d>;
+  /// \brief A neighbour's voxel relative to the query's: -1, 0 or +1 per axis.
+  struct Offset {
+    std::int8_t d[3];
+  };
   /// \brief Key of the voxel holding `p`.
   std::uint64_t keyOf(const Eigen::Vector3d& p) const {
     const Eigen::Array3i c = voxelOf(p, inv_voxel_);
@@ -35,10 +39,13 @@ class VoxelHashMap {
   }
   /// \brief The non-empty voxels among the 27 around `p` into `out`; returns how many. The
   /// pointers stay valid until the map changes.
-  int neighbours(const Eigen::Vector3d& p, const Cell* out[27]) const;
-  /// \brief Nearest point to `p` among `cells` within `max_distance` (false when none).
-  static bool nearestIn(const Cell* const* cells, int n, const Eigen::Vector3d& p,
-                        double max_distance, Eigen::Vector3d& q);
+  int neighbours(const Eigen::Vector3d& p, const Cell* out[27], Offset offsets[27]) const;
+  /// \brief The nearest point within max_distance of `p` in `cells` (from neighbours() of a
+  /// point in the same voxel as `p`), scanned in order; a cell whose box is farther from `p`
+  /// than the best distance so far is skipped (it cannot hold a nearer point, so the answer is
+  /// the one a full scan gives).
+  bool nearestIn(const Cell* const* cells, const Offset* offsets, int n, const Eigen::Vector3d& p,
+                 double max_distance, Eigen::Vector3d& q) const;
 
   /// \brief Points of the voxel holding `p` (nullptr when that voxel is empty).
   const std::vector<Eigen::Vector3d>* voxelPoints(const Eigen::Vector3d& p) const;
