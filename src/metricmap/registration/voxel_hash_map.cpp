@@ -66,22 +66,34 @@ bool VoxelHashMap::nearestIn(const Cell* const* cells, const Offset* offsets, in
   const Eigen::Array3d f = s - s.floor();
   const Eigen::Array3d below = (f * voxel_).square(), above = ((1.0 - f) * voxel_).square();
   double best = max_distance * max_distance;
+  int best_cell = n;  // the answer of a scan in the given order: ties go to the earlier cell
   bool found = false;
+  auto visit = [&](int i) {
+    for (const Eigen::Vector3d& m : *cells[i]) {
+      const double d2 = (m - p).squaredNorm();
+      if (d2 < best || (d2 == best && found && i < best_cell)) {
+        best = d2;
+        best_cell = i;
+        q = m;
+        found = true;
+      }
+    }
+  };
+  // The query's own voxel first: it usually holds the answer, and then most others are skipped.
+  int own = -1;
   for (int i = 0; i < n; ++i) {
+    if (offsets[i].d[0] == 0 && offsets[i].d[1] == 0 && offsets[i].d[2] == 0) own = i;
+  }
+  if (own >= 0) visit(own);
+  for (int i = 0; i < n; ++i) {
+    if (i == own) continue;
     double box = 0.0;
     for (int a = 0; a < 3; ++a) {
       box += offsets[i].d[a] < 0 ? below[a] : (offsets[i].d[a] > 0 ? above[a] : 0.0);
     }
     // A margin for rounding: skip only cells clearly farther than the best so far.
     if (box > best * (1.0 + 1e-9) + 1e-12) continue;
-    for (const Eigen::Vector3d& m : *cells[i]) {
-      const double d2 = (m - p).squaredNorm();
-      if (d2 < best) {
-        best = d2;
-        q = m;
-        found = true;
-      }
-    }
+    visit(i);
   }
   return found;
 }
