@@ -12,15 +12,6 @@ namespace {
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
-// Per source point: the voxel it fell in last time and the non-empty voxels around it, so
-// that a point staying in its voxel between steps needs no hash lookup.
-struct NeighbourCache {
-  std::uint64_t key = ~std::uint64_t{0};
-  int n = 0;
-  const VoxelHashMap::Cell* cells[27];
-  VoxelHashMap::Offset offsets[27];
-};
-
 struct NormalEquations {
   Matrix6d h = Matrix6d::Zero();
   Vector6d g = Vector6d::Zero();
@@ -38,7 +29,7 @@ Eigen::Matrix3d minusHat(const Eigen::Vector3d& p) {
 // Jacobian for the right perturbation (dt, dtheta) is [I, -[p]x].
 NormalEquations buildSystem(const std::vector<Eigen::Vector3d>& source, const VoxelHashMap& map,
                             const Eigen::Isometry3d& t, double threshold,
-                            std::vector<NeighbourCache>& cache) {
+                            std::vector<VoxelHashMap::Neighbourhood>& cache) {
   NormalEquations ne;
   const Eigen::Matrix3d rt = t.linear().transpose();
   const double kernel2 = (threshold / 3.0) * (threshold / 3.0);
@@ -46,13 +37,7 @@ NormalEquations buildSystem(const std::vector<Eigen::Vector3d>& source, const Vo
   for (std::size_t i = 0; i < source.size(); ++i) {
     const Eigen::Vector3d& p = source[i];
     const Eigen::Vector3d w = t * p;
-    NeighbourCache& c = cache[i];
-    const std::uint64_t key = map.keyOf(w);
-    if (key != c.key) {
-      c.key = key;
-      c.n = map.neighbours(w, c.cells, c.offsets);
-    }
-    if (!map.nearestIn(c.cells, c.offsets, c.n, w, threshold, q)) continue;
+    if (!map.nearestCached(w, threshold, cache[i], q)) continue;
     const Eigen::Vector3d r = rt * (w - q);
     const double e2 = r.squaredNorm() / kernel2;
     const double weight = 1.0 / ((1.0 + e2) * (1.0 + e2));
@@ -105,7 +90,7 @@ PointToPointIcpResult alignPointToPoint(const std::vector<Eigen::Vector3d>& sour
   PointToPointIcpResult res;
   res.pose = initial;
   if (source.empty() || map.empty()) return res;
-  std::vector<NeighbourCache> cache(source.size());
+  std::vector<VoxelHashMap::Neighbourhood> cache(source.size());
   for (res.iterations = 0; res.iterations < params.max_iterations;) {
     const NormalEquations ne = buildSystem(source, map, res.pose, params.threshold, cache);
     if (ne.pairs < 6) break;

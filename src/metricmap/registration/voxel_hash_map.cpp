@@ -40,36 +40,37 @@ void VoxelHashMap::removeFar(const Eigen::Vector3d& origin, double radius) {
   }
 }
 
-int VoxelHashMap::neighbours(const Eigen::Vector3d& p, const Cell* out[27],
-                             Offset offsets[27]) const {
-  const Eigen::Array3i c = voxelOf(p, inv_voxel_);
-  int n = 0;
-  for (int dx = -1; dx <= 1; ++dx) {
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dz = -1; dz <= 1; ++dz) {
-        const auto it = map_.find(packVoxel(c.x() + dx, c.y() + dy, c.z() + dz));
-        if (it == map_.end()) continue;
-        offsets[n] = {{static_cast<std::int8_t>(dx), static_cast<std::int8_t>(dy),
-                       static_cast<std::int8_t>(dz)}};
-        out[n++] = &it->second;
-      }
-    }
-  }
-  return n;
-}
-
-bool VoxelHashMap::nearestIn(const Cell* const* cells, const Offset* offsets, int n,
-                             const Eigen::Vector3d& p, double max_distance,
-                             Eigen::Vector3d& q) const {
-  // Squared distance from p to the faces of its voxel, below and above, per axis.
+bool VoxelHashMap::nearestCached(const Eigen::Vector3d& p, double max_distance, Neighbourhood& hood,
+                                 Eigen::Vector3d& q) const {
   const Eigen::Array3d s = p.array() * inv_voxel_;
-  const Eigen::Array3d f = s - s.floor();
+  const Eigen::Array3d cell = s.floor();
+  const Eigen::Array3i c = voxelOf(p, inv_voxel_);
+  const std::uint64_t key = packVoxel(c.x(), c.y(), c.z());
+  if (key != hood.key) {
+    hood.key = key;
+    hood.center = c;
+    hood.looked_up = 0;
+  }
+  auto cellAt = [&](int i) {
+    if ((hood.looked_up >> i & 1u) == 0) {
+      const auto it =
+          map_.find(packVoxel(hood.center.x() + i / 9 - 1, hood.center.y() + i / 3 % 3 - 1,
+                              hood.center.z() + i % 3 - 1));
+      hood.cells[i] = it == map_.end() ? nullptr : &it->second;
+      hood.looked_up |= 1u << i;
+    }
+    return hood.cells[i];
+  };
+  // Squared distance from p to the faces of its voxel, below and above, per axis.
+  const Eigen::Array3d f = s - cell;
   const Eigen::Array3d below = (f * voxel_).square(), above = ((1.0 - f) * voxel_).square();
   double best = max_distance * max_distance;
-  int best_cell = n;  // the answer of a scan in the given order: ties go to the earlier cell
+  int best_cell = 27;
   bool found = false;
   auto visit = [&](int i) {
-    for (const Eigen::Vector3d& m : *cells[i]) {
+    const Cell* points = cellAt(i);
+    if (points == nullptr) return;
+    for (const Eigen::Vector3d& m : *points) {
       const double d2 = (m - p).squaredNorm();
       if (d2 < best || (d2 == best && found && i < best_cell)) {
         best = d2;
@@ -79,19 +80,14 @@ bool VoxelHashMap::nearestIn(const Cell* const* cells, const Offset* offsets, in
       }
     }
   };
-  // The query's own voxel first: it usually holds the answer, and then most others are skipped.
-  int own = -1;
-  for (int i = 0; i < n; ++i) {
-    if (offsets[i].d[0] == 0 && offsets[i].d[1] == 0 && offsets[i].d[2] == 0) own = i;
-  }
-  if (own >= 0) visit(own);
-  for (int i = 0; i < n; ++i) {
-    if (i == own) continue;
+  constexpr int kOwn = 13;  // dx = dy = dz = 0: it usually holds the answer
+  visit(kOwn);
+  for (int i = 0; i < 27; ++i) {
+    if (i == kOwn) continue;
+    const int d[3] = {i / 9 - 1, i / 3 % 3 - 1, i % 3 - 1};
     double box = 0.0;
-    for (int a = 0; a < 3; ++a) {
-      box += offsets[i].d[a] < 0 ? below[a] : (offsets[i].d[a] > 0 ? above[a] : 0.0);
-    }
-    // A margin for rounding: skip only cells clearly farther than the best so far.
+    for (int a = 0; a < 3; ++a) box += d[a] < 0 ? below[a] : (d[a] > 0 ? above[a] : 0.0);
+    // A margin for rounding: skip only voxels clearly farther than the best so far.
     if (box > best * (1.0 + 1e-9) + 1e-12) continue;
     visit(i);
   }
@@ -100,10 +96,8 @@ bool VoxelHashMap::nearestIn(const Cell* const* cells, const Offset* offsets, in
 
 bool VoxelHashMap::nearest(const Eigen::Vector3d& p, double max_distance,
                            Eigen::Vector3d& q) const {
-  const Cell* cells[27];
-  Offset offsets[27];
-  const int n = neighbours(p, cells, offsets);
-  return nearestIn(cells, offsets, n, p, max_distance, q);
+  Neighbourhood hood;
+  return nearestCached(p, max_distance, hood, q);
 }
 
 const std::vector<Eigen::Vector3d>* VoxelHashMap::voxelPoints(const Eigen::Vector3d& p) const {

@@ -28,24 +28,19 @@ class VoxelHashMap {
   bool nearest(const Eigen::Vector3d& p, double max_distance, Eigen::Vector3d& q) const;
 
   using Cell = std::vector<Eigen::Vector3d>;
-  /// \brief A neighbour's voxel relative to the query's: -1, 0 or +1 per axis.
-  struct Offset {
-    std::int8_t d[3];
+  /// \brief The 27 voxels around a query's voxel, looked up on demand and remembered while
+  /// queries stay in that voxel (the pointers stay valid until the map changes).
+  struct Neighbourhood {
+    std::uint64_t key = ~std::uint64_t{0};
+    Eigen::Array3i center = Eigen::Array3i::Zero();
+    std::uint32_t looked_up = 0;  ///< bit i: cells[i] is known (null when that voxel is empty)
+    const Cell* cells[27];        ///< i = 9 (dx + 1) + 3 (dy + 1) + (dz + 1)
   };
-  /// \brief Key of the voxel holding `p`.
-  std::uint64_t keyOf(const Eigen::Vector3d& p) const {
-    const Eigen::Array3i c = voxelOf(p, inv_voxel_);
-    return packVoxel(c.x(), c.y(), c.z());
-  }
-  /// \brief The non-empty voxels among the 27 around `p` into `out`; returns how many. The
-  /// pointers stay valid until the map changes.
-  int neighbours(const Eigen::Vector3d& p, const Cell* out[27], Offset offsets[27]) const;
-  /// \brief The nearest point within max_distance of `p` in `cells` (from neighbours() of a
-  /// point in the same voxel as `p`), scanned in order; a cell whose box is farther from `p`
-  /// than the best distance so far is skipped (it cannot hold a nearer point, so the answer is
-  /// the one a full scan gives).
-  bool nearestIn(const Cell* const* cells, const Offset* offsets, int n, const Eigen::Vector3d& p,
-                 double max_distance, Eigen::Vector3d& q) const;
+  /// \brief nearest() for a query that may reuse `hood`: the query's own voxel first, then
+  /// the others in index order, skipping (and not looking up) every voxel whose box is farther
+  /// than the best distance so far. The answer is the full scan's: ties go to the lower index.
+  bool nearestCached(const Eigen::Vector3d& p, double max_distance, Neighbourhood& hood,
+                     Eigen::Vector3d& q) const;
 
   /// \brief Points of the voxel holding `p` (nullptr when that voxel is empty).
   const std::vector<Eigen::Vector3d>* voxelPoints(const Eigen::Vector3d& p) const;
