@@ -96,6 +96,35 @@ TEST(LogOddsTransfer, ClampingIsPerPart) {
   EXPECT_LT(*a.logOdds(v), one.clampMaxLogOdds() - 1.0f);
 }
 
+// Merging a buffer straight into a map equals deserialising it and merging the map.
+TEST(LogOddsTransfer, MergeSerializedEqualsMergeOfTheMap) {
+  const LogOddsParams p = wideClamps();
+  LogOddsMap a(p), b(p), c(p);
+  for (std::size_t f = 0; f < 2; ++f) {
+    const test::WorldScan s = test::subsample(test::kittiWorldScan(f), 8);
+    (f == 0 ? a : b).insertScan(s.points, s.origin);
+    c.insertScan(test::subsample(test::kittiWorldScan(0), 8).points,
+                 test::subsample(test::kittiWorldScan(0), 8).origin);
+  }
+  const auto bytes = serializeLogOdds(b);
+  LogOddsMap direct = a;
+  mergeSerializedLogOdds(direct, bytes.data(), bytes.size(), "b");
+  a.merge(deserializeLogOdds(bytes.data(), bytes.size(), "b"));
+  ASSERT_EQ(direct.knownVoxels(), a.knownVoxels());
+  a.forEachKnown([&](const VoxelKey& k, float l) { EXPECT_EQ(*direct.logOdds(k), l); });
+  // a corrupt buffer leaves the map unchanged; other parameters are refused
+  std::vector<std::uint8_t> bad = bytes;
+  bad[bad.size() - 1] = 0xff;  // last log-odds: NaN
+  bad[bad.size() - 2] = 0xff;
+  const std::size_t before = c.knownVoxels();
+  EXPECT_THROW(mergeSerializedLogOdds(c, bad.data(), bad.size(), "x"), InputError);
+  EXPECT_EQ(c.knownVoxels(), before);
+  LogOddsParams q = p;
+  q.resolution = 0.3;
+  LogOddsMap other(q);
+  EXPECT_THROW(mergeSerializedLogOdds(other, bytes.data(), bytes.size(), "x"), InputError);
+}
+
 TEST(LogOddsTransfer, CorruptBuffersAreRefused) {
   const test::WorldScan s = test::subsample(test::kittiWorldScan(0), 50);
   LogOddsMap map(wideClamps());

@@ -8,6 +8,7 @@ namespace metricmap::distributed {
 
 GridAccumulator reduceGrid(const GridAccumulator& local) {
   const int size = worldSize();
+  if (size == 1) return local;  // nothing to exchange
   // 1. each rank sends every owner the cells of its tiles
   const std::vector<Bytes> incoming =
       exchangeBuffers(local.serializeByOwner(static_cast<unsigned>(size)));

@@ -1,38 +1,28 @@
 #include "metricmap/distributed/distributed_occupancy.h"
 
-#include <stdexcept>
 #include <string>
 
 #include "metricmap/distributed/exchange.h"
-#include "metricmap/exceptions.h"
 #include "metricmap/occupancy/log_odds_transfer.h"
 
 namespace metricmap::distributed {
-namespace {
-
-void mergeInto(LogOddsMap& map, const Bytes& bytes, const std::string& what) {
-  const LogOddsMap part = deserializeLogOdds(bytes.data(), bytes.size(), what);
-  try {
-    map.merge(part);
-  } catch (const std::invalid_argument& e) {
-    throw InputError(what + ": " + e.what());
-  }
-}
-
-}  // namespace
-
 LogOddsMap reduceLogOdds(const LogOddsMap& local) {
   const int size = worldSize();
+  if (size == 1) return local;  // nothing to exchange
   const std::vector<Bytes> incoming =
       exchangeBuffers(serializeLogOddsByOwner(local, static_cast<unsigned>(size)));
   LogOddsMap owned(local.params());
   for (int k = 0; k < size; ++k)  // rank order = frame order
-    mergeInto(owned, incoming[k], "voxels from rank " + std::to_string(k));
-  const std::vector<Bytes> gathered = gatherBuffers(serializeLogOdds(owned));
-  LogOddsMap all(local.params());
-  for (std::size_t k = 0; k < gathered.size(); ++k)
-    mergeInto(all, gathered[k], "merged voxels of rank " + std::to_string(k));
-  return all;
+    mergeSerializedLogOdds(owned, incoming[k].data(), incoming[k].size(),
+                           "voxels from rank " + std::to_string(k));
+  // rank 0 keeps its own tiles as they are and adds the other owners' (disjoint) voxels
+  const std::vector<Bytes> gathered =
+      gatherBuffers(worldRank() == 0 ? Bytes() : serializeLogOdds(owned));
+  if (worldRank() != 0) return LogOddsMap(local.params());
+  for (std::size_t k = 1; k < gathered.size(); ++k)
+    mergeSerializedLogOdds(owned, gathered[k].data(), gathered[k].size(),
+                           "merged voxels of rank " + std::to_string(k));
+  return owned;
 }
 
 }  // namespace metricmap::distributed

@@ -85,6 +85,11 @@ class LogOddsMap {
   /// \throws std::invalid_argument when resolutions or sensor models differ
   void merge(const LogOddsMap& other);
 
+  /// \brief Merge one voxel as merge() does: its log-odds when it was unknown, else
+  /// clamp(current + log_odds). Used to merge maps received as buffers.
+  /// \throws CapacityError outside the key space; std::invalid_argument for NaN/Inf
+  void mergeLogOdds(const VoxelKey& key, float log_odds);
+
   /// \brief Set a voxel's log-odds as given (finite), marking it known. Used by readers.
   /// \throws CapacityError outside the key space; std::invalid_argument for NaN/Inf
   void setLogOdds(const VoxelKey& key, float log_odds);

@@ -35,4 +35,11 @@ std::vector<std::vector<std::uint8_t>> serializeLogOddsByOwner(const LogOddsMap&
 /// non-finite log-odds
 LogOddsMap deserializeLogOdds(const std::uint8_t* data, std::size_t size, const std::string& what);
 
+/// \brief Merge a buffer's voxels straight into `map` (as map.merge(deserializeLogOdds(...)),
+/// without the intermediate map). The whole buffer is checked first: on an error `map` is
+/// unchanged. A voxel repeated within the buffer is added twice (not detected here).
+/// \throws InputError as deserializeLogOdds, and when the buffer's parameters differ from the map's
+void mergeSerializedLogOdds(LogOddsMap& map, const std::uint8_t* data, std::size_t size,
+                            const std::string& what);
+
 }  // namespace metricmap
