@@ -137,7 +137,7 @@ TEST(LogOddsTransfer, CorruptBuffersAreRefused) {
   EXPECT_EQ(back.params().max_range, 30.0);
 
   const std::size_t header = 8 + 7 * 8 + 8;
-  for (std::size_t n = 0; n < header + 3 * 12; ++n)
+  for (std::size_t n = 0; n < header + 300; ++n)
     EXPECT_THROW(deserializeLogOdds(good.data(), n, "x"), InputError) << n;
   EXPECT_THROW(deserializeLogOdds(good.data(), good.size() - 1, "x"), InputError);
   auto refused = [&](std::vector<std::uint8_t> b, const char* why) {
@@ -163,10 +163,19 @@ TEST(LogOddsTransfer, CorruptBuffersAreRefused) {
   refused(b, "key outside the key space");
   b = good;
   const float inf = INFINITY;
-  std::memcpy(b.data() + header + 8, &inf, 4);
+  std::memcpy(b.data() + header + 72, &inf, 4);  // first block's first log-odds
   refused(b, "infinite log-odds");
   b = good;
-  std::memcpy(b.data() + header + 12, b.data() + header, 12);  // second voxel = first
+  std::fill(b.begin() + header + 8, b.begin() + header + 72, 0);
+  refused(b, "a block without known voxels");
+  // one voxel's block, twice
+  LogOddsMap one(wideClamps());
+  one.setLogOdds({3, 4, 5}, 0.5f);
+  b = serializeLogOdds(one);
+  ASSERT_EQ(b.size(), header + 72 + 4);
+  b.insert(b.end(), b.begin() + header, b.end());
+  const std::uint64_t two = 2;
+  std::memcpy(b.data() + header - 8, &two, 8);
   refused(b, "duplicate voxel");
 }
 

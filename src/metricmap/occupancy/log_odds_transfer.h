@@ -22,10 +22,12 @@
 
 namespace metricmap {
 
-/// \brief Every known voxel of `map` and its parameters: 12 bytes per voxel + 80.
+/// \brief Every known voxel of `map` and its parameters, block by block (8^3 voxels): per block
+/// its key and known bits (72 bytes) and one float per known voxel; 72 bytes of header.
 std::vector<std::uint8_t> serializeLogOdds(const LogOddsMap& map);
 
-/// \brief One buffer per owner: buffer k holds the voxels tileOwner() gives to part k.
+/// \brief One buffer per owner: buffer k holds the blocks whose voxels tileOwner() gives to part
+/// k (tiles are whole blocks).
 std::vector<std::vector<std::uint8_t>> serializeLogOddsByOwner(const LogOddsMap& map,
                                                                unsigned parts);
 
@@ -37,7 +39,7 @@ LogOddsMap deserializeLogOdds(const std::uint8_t* data, std::size_t size, const 
 
 /// \brief Merge a buffer's voxels straight into `map` (as map.merge(deserializeLogOdds(...)),
 /// without the intermediate map). The whole buffer is checked first: on an error `map` is
-/// unchanged. A voxel repeated within the buffer is added twice (not detected here).
+/// unchanged. A block repeated within the buffer is added twice (not detected here).
 /// \throws InputError as deserializeLogOdds, and when the buffer's parameters differ from the map's
 void mergeSerializedLogOdds(LogOddsMap& map, const std::uint8_t* data, std::size_t size,
                             const std::string& what);
