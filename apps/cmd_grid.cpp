@@ -101,6 +101,15 @@ GridOutcome buildOne(const GridOptions& o) {
   return g;
 }
 
+/// The slowest rank's seconds (load, and build + exchange since t0), on rank 0.
+void finishSeconds(const Ranks& ranks, GridOutcome& g, std::chrono::steady_clock::time_point t0) {
+  g.grid_s = secondsSince(t0) - g.load_s;
+  std::vector<double> seconds = {g.load_s, g.grid_s};
+  ranks.max(seconds);
+  g.load_s = seconds[0];
+  g.grid_s = seconds[1];
+}
+
 /// Distributed: each rank bins its share of the files one at a time (world-aligned), the cells
 /// are reduced over the ranks; rank 0 gets the outcome (the others an empty one).
 GridOutcome buildRanks(const GridOptions& o, const Ranks& ranks) {
@@ -120,9 +129,16 @@ GridOutcome buildRanks(const GridOptions& o, const Ranks& ranks) {
     grid.compute();
     local.add({grid.getLayout(), grid.getCells(), grid.getStatistics()}, loaded.cloud->size());
   }
+  g.load_s = load_s;
+  if (o.out.empty() && o.cells.empty()) {  // statistics only: no cells gathered on rank 0
+    const GridSummary all = ranks.reduceSummary(local);
+    finishSeconds(ranks, g, t0);
+    g.input_points = all.input_points;
+    g.stats = gridStatisticsOf(all, o.cell_size).stats;
+    return g;
+  }
   const GridAccumulator all = ranks.reduce(local);
-  std::vector<double> seconds = {load_s, secondsSince(t0) - load_s};
-  ranks.max(seconds);
+  finishSeconds(ranks, g, t0);
   if (!ranks.isRoot()) return g;
   const GridResult r = all.result();
   g.input_points = all.inputPoints();
@@ -137,8 +153,6 @@ GridOutcome buildRanks(const GridOptions& o, const Ranks& ranks) {
   g.means.width = static_cast<std::uint32_t>(g.means.size());
   g.means.height = 1;
   g.means.is_dense = true;
-  g.load_s = seconds[0];
-  g.grid_s = seconds[1];
   return g;
 }
 

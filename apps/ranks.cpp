@@ -52,6 +52,9 @@ GridAccumulator Ranks::reduce(const GridAccumulator& local) const {
 LogOddsMap Ranks::reduce(const LogOddsMap& local) const {
   return mpi_ ? distributed::reduceLogOdds(local) : local;
 }
+GridSummary Ranks::reduceSummary(const GridAccumulator& local) const {
+  return mpi_ ? distributed::reduceGridSummary(local) : local.summary();
+}
 void Ranks::sum(std::vector<std::uint64_t>& values) const {
   if (mpi_) distributed::sumToRoot(values);
 }
@@ -74,6 +77,7 @@ std::pair<std::size_t, std::size_t> Ranks::share(std::size_t n) const { return {
 void Ranks::run(const std::function<void()>& work) const { work(); }
 GridAccumulator Ranks::reduce(const GridAccumulator& local) const { return local; }
 LogOddsMap Ranks::reduce(const LogOddsMap& local) const { return local; }
+GridSummary Ranks::reduceSummary(const GridAccumulator& local) const { return local.summary(); }
 void Ranks::sum(std::vector<std::uint64_t>&) const {}
 void Ranks::max(std::vector<double>&) const {}
 #endif

@@ -13,4 +13,9 @@ namespace metricmap::distributed {
 /// \throws InputError when a received buffer is corrupt; CapacityError (see exchangeBuffers)
 GridAccumulator reduceGrid(const GridAccumulator& local);
 
+/// \brief Collective. Only the summary of the whole job (no cells) on rank 0, for
+/// gridStatisticsOf: the same exchange and owner reduction, then a few numbers per rank instead
+/// of the cells (counts summed, cell boxes min/max-ed). Other ranks get an empty summary.
+GridSummary reduceGridSummary(const GridAccumulator& local);
+
 }  // namespace metricmap::distributed

@@ -97,6 +97,18 @@ void sumToRoot(std::vector<std::uint64_t>& values) {
   if (rank == 0) values = out;
 }
 
+namespace {
+void reduceInt64(std::vector<std::int64_t>& values, MPI_Op op) {
+  std::vector<std::int64_t> out(values.size());
+  MPI_Reduce(values.data(), out.data(), static_cast<int>(values.size()), MPI_INT64_T, op, 0,
+             MPI_COMM_WORLD);
+  if (worldRank() == 0) values = out;
+}
+}  // namespace
+
+void minToRoot(std::vector<std::int64_t>& values) { reduceInt64(values, MPI_MIN); }
+void maxToRoot(std::vector<std::int64_t>& values) { reduceInt64(values, MPI_MAX); }
+
 void maxToRoot(std::vector<double>& values) {
   std::vector<double> out(values.size());
   MPI_Reduce(values.data(), out.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MAX, 0,

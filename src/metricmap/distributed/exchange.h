@@ -27,6 +27,9 @@ std::vector<Bytes> gatherBuffers(const Bytes& mine);
 
 /// \brief Element-wise sum over the ranks, result on rank 0 (others keep theirs).
 void sumToRoot(std::vector<std::uint64_t>& values);
+/// \brief Element-wise minimum / maximum of int64 values over the ranks, result on rank 0.
+void minToRoot(std::vector<std::int64_t>& values);
+void maxToRoot(std::vector<std::int64_t>& values);
 /// \brief Element-wise maximum over the ranks, result on rank 0.
 void maxToRoot(std::vector<double>& values);
 

@@ -174,51 +174,63 @@ GridAccumulator GridAccumulator::deserialize(const std::uint8_t* data, std::size
   return acc;
 }
 
-GridResult GridAccumulator::result() const {
+GridSummary GridAccumulator::summary() const {
   normalize();
-  GridResult res;
-  res.stats.skipped_points = skipped_points_;
-  if (cells_.empty()) return res;
-  GridLayout& L = res.layout;
-  L.cell_size = cell_size_;
-  L.origin = Eigen::Vector3d::Zero();
-  std::array<std::int64_t, 3> lo = cells_.front().index, hi = lo;
+  GridSummary m;
+  m.input_points = input_points_;
+  m.skipped_points = skipped_points_;
+  m.cells = cells_.size();
+  if (cells_.empty()) return m;
+  m.min_index = m.max_index = cells_.front().index;
   for (const CellSum& c : cells_) {
+    m.points += c.count;
     for (int a = 0; a < 3; ++a) {
-      lo[a] = std::min(lo[a], c.index[a]);
-      hi[a] = std::max(hi[a], c.index[a]);
+      m.min_index[a] = std::min(m.min_index[a], c.index[a]);
+      m.max_index[a] = std::max(m.max_index[a], c.index[a]);
     }
   }
+  return m;
+}
+
+GridResult gridStatisticsOf(const GridSummary& m, float cell_size) {
+  GridResult res;
+  res.stats.skipped_points = m.skipped_points;
+  if (m.cells == 0) return res;
+  GridLayout& L = res.layout;
+  L.cell_size = cell_size;
+  L.origin = Eigen::Vector3d::Zero();
   std::uint64_t total = 1;
   bool overflow = false;
   for (int a = 0; a < 3; ++a) {
-    L.min_index[a] = lo[a];
-    L.dims[a] = static_cast<std::uint64_t>(hi[a] - lo[a]) + 1;
+    L.min_index[a] = m.min_index[a];
+    L.dims[a] = static_cast<std::uint64_t>(m.max_index[a] - m.min_index[a]) + 1;
     overflow = overflow || __builtin_mul_overflow(total, L.dims[a], &total);
   }
   if (overflow || total == std::numeric_limits<std::uint64_t>::max()) {
     std::ostringstream os;
     os << "grid of " << L.dims[0] << " x " << L.dims[1] << " x " << L.dims[2]
-       << " cells at cell size " << cell_size_ << " does not fit in 64 bits";
+       << " cells at cell size " << cell_size << " does not fit in 64 bits";
     throw CapacityError(os.str());
   }
+  GridStatistics& s = res.stats;
+  s.total_cells = total;
+  s.occupied_cells = m.cells;
+  s.empty_cells = total - m.cells;
+  s.points = m.points;
+  s.mean_points_per_occupied_cell = static_cast<double>(m.points) / static_cast<double>(m.cells);
+  return res;
+}
+
+GridResult GridAccumulator::result() const {
+  GridResult res = gridStatisticsOf(summary(), cell_size_);
   res.cells.reserve(cells_.size());
-  std::uint64_t points = 0;
   for (const CellSum& c : cells_) {
     GridCell g;
     g.index = c.index;
     g.count = c.count;
     g.mean = Eigen::Vector3d(c.sum[0], c.sum[1], c.sum[2]) / static_cast<double>(c.count);
-    points += c.count;
     res.cells.push_back(g);
   }
-  GridStatistics& s = res.stats;
-  s.total_cells = total;
-  s.occupied_cells = res.cells.size();
-  s.empty_cells = total - s.occupied_cells;
-  s.points = points;
-  s.mean_points_per_occupied_cell =
-      static_cast<double>(points) / static_cast<double>(s.occupied_cells);
   return res;
 }
 

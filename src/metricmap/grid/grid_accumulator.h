@@ -21,6 +21,16 @@ struct CellSum {
   std::array<double, 3> sum{};
 };
 
+/// \brief What the statistics of a set of cells need: they reduce with sums and min/max.
+struct GridSummary {
+  std::uint64_t input_points = 0, skipped_points = 0, points = 0, cells = 0;
+  std::array<std::int64_t, 3> min_index{}, max_index{};  ///< of the cells (when cells > 0)
+};
+
+/// \brief Layout and statistics (no cells) of a summary.
+/// \throws CapacityError when the bounding volume has 2^64 cells or more
+GridResult gridStatisticsOf(const GridSummary& summary, float cell_size);
+
 /// \brief Mergeable grid statistics. Keys are world-aligned (GridOrigin::WorldAligned: index =
 /// floor(p * (1 / cell)) in float), so parts built independently agree on every cell; the
 /// CloudMinimum partition depends on the whole cloud's minimum and cannot be merged this way.
@@ -58,6 +68,9 @@ class GridAccumulator {
   /// occupied cells (world-aligned, the one-process layout), statistics.
   /// \throws CapacityError when the bounding volume has 2^64 cells or more
   GridResult result() const;
+
+  /// \brief Totals and cell box of the (distinct) cells held.
+  GridSummary summary() const;
 
   float cellSize() const { return cell_size_; }
   std::uint64_t inputPoints() const { return input_points_; }
