@@ -176,26 +176,6 @@ void LogOddsMap::mergeBlock(std::uint64_t block_key, const std::uint64_t* known,
   }
 }
 
-void LogOddsMap::mergeLogOdds(const VoxelKey& key, float log_odds) {
-  if (!inKeySpace(key)) {
-    std::ostringstream msg;
-    msg << "voxel (" << key.x << ", " << key.y << ", " << key.z << ") is outside the key space";
-    throw CapacityError(msg.str());
-  }
-  if (!std::isfinite(log_odds)) throw std::invalid_argument("log-odds must be finite");
-  VoxelBlock& b =
-      blockFor(packVoxelKey(key.x >> kBlockShift, key.y >> kBlockShift, key.z >> kBlockShift));
-  const int i = detail::voxelInBlock(key.x, key.y, key.z);
-  const std::uint64_t bit = std::uint64_t{1} << (i & 63);
-  if ((b.known[i >> 6] & bit) == 0) {
-    ++known_;
-    b.known[i >> 6] |= bit;
-    b.log_odds[i] = log_odds;
-  } else {
-    b.log_odds[i] = clampLogOdds(b.log_odds[i] + log_odds, clamp_min_, clamp_max_);
-  }
-}
-
 void LogOddsMap::setLogOdds(const VoxelKey& key, float log_odds) {
   if (!inKeySpace(key)) {
     std::ostringstream msg;

@@ -85,11 +85,6 @@ class LogOddsMap {
   /// \throws std::invalid_argument when resolutions or sensor models differ
   void merge(const LogOddsMap& other);
 
-  /// \brief Merge one voxel as merge() does: its log-odds when it was unknown, else
-  /// clamp(current + log_odds). Used to merge maps received as buffers.
-  /// \throws CapacityError outside the key space; std::invalid_argument for NaN/Inf
-  void mergeLogOdds(const VoxelKey& key, float log_odds);
-
   /// \brief Visit every block of 8^3 voxels holding a known voxel: its packed block key
   /// (packVoxelKey of voxel key >> 3), kBlockWords words of known bits (voxel i = x + 8 y +
   /// 64 z inside the block) and its kBlockVoxels log-odds (meaningful where known).
