@@ -1,4 +1,6 @@
-// metricmap grid FILE --cell-size S: occupancy grid statistics, cell means, per-cell CSV.
+// metricmap grid FILE... --cell-size S: occupancy grid statistics, cell means, per-cell CSV.
+// Several files are one input (concatenated). With --distributed (under mpirun) each rank bins
+// its share of the files and the world-aligned cells are reduced over MPI (ranks.h).
 #include <memory>
 #include <sstream>
 
@@ -6,10 +8,12 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "metricmap/grid/grid_accumulator.h"
 #include "metricmap/grid/occupancy_grid.h"
 #include "metricmap/io/cell_csv.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/output_set.h"
+#include "ranks.h"
 #include "stats_json.h"
 #include "table.h"
 
@@ -17,47 +21,140 @@ namespace metricmap::cli {
 namespace {
 
 struct GridOptions {
-  std::string file;
+  std::vector<std::string> files;
   float cell_size = 0.0f;
   std::string origin = "cloud-min";
+  bool origin_given = false, distributed = false;
   std::string out, cells, format = "table", pcd_format = "binary";
 };
 
-void runGrid(const GridOptions& o) {
-  const LoadedCloud loaded = loadTimed(o.file);
-  const auto& cloud = loaded.cloud;
-
-  const auto t1 = std::chrono::steady_clock::now();
-  OccupancyGrid<pcl::PointXYZ> grid;
-  grid.setCellSize(o.cell_size);
-  grid.setOrigin(o.origin == "world" ? GridOrigin::WorldAligned : GridOrigin::CloudMinimum);
-  grid.setInputCloud(cloud);
+/// What a build gives the outputs, from one process or from the ranks.
+struct GridOutcome {
+  std::uint64_t input_points = 0;
+  GridStatistics stats;
+  std::vector<GridCell> cells;
   pcl::PointCloud<pcl::PointXYZ> means;
-  grid.filter(means);
-  const double grid_s = secondsSince(t1);
+  double load_s = 0.0, grid_s = 0.0;
+};
 
+void emitGrid(const GridOptions& o, const GridOutcome& g) {
   OutputSet outputs;
-  if (!o.out.empty()) savePcdAtomic(outputs.stage(o.out), means, parsePcdFormat(o.pcd_format));
-  if (!o.cells.empty()) writeTextAtomic(outputs.stage(o.cells), gridCellsCsv(grid.getCells()));
+  if (!o.out.empty()) savePcdAtomic(outputs.stage(o.out), g.means, parsePcdFormat(o.pcd_format));
+  if (!o.cells.empty()) writeTextAtomic(outputs.stage(o.cells), gridCellsCsv(g.cells));
   outputs.commit();
 
-  const GridStatistics& s = grid.getStatistics();
+  const GridStatistics& s = g.stats;
+  std::string files = o.files[0];
+  for (std::size_t i = 1; i < o.files.size(); ++i) files += "," + o.files[i];
   if (o.format == "json") {
-    nlohmann::json j = {{"file", o.file},
-                        {"points", cloud->size()},
+    nlohmann::json j = {{"points", g.input_points},
                         {"cell_size", o.cell_size},
                         {"origin", o.origin},
                         {"grid", s},
-                        {"seconds", {{"load", loaded.seconds}, {"grid", grid_s}}}};
+                        {"seconds", {{"load", g.load_s}, {"grid", g.grid_s}}}};
+    if (o.files.size() == 1) {
+      j["file"] = o.files[0];
+    } else {
+      j["files"] = o.files;
+    }
     emit(j.dump(2) + "\n", "");
     return;
   }
   Table t({"file", "cell_size", "origin", "points", "total_cells", "occupied_cells", "empty_cells",
            "mean_points_per_occupied_cell"});
-  t.addRow({o.file, fixed(o.cell_size, 3), o.origin, std::to_string(s.points),
+  t.addRow({files, fixed(o.cell_size, 3), o.origin, std::to_string(s.points),
             std::to_string(s.total_cells), std::to_string(s.occupied_cells),
             std::to_string(s.empty_cells), fixed(s.mean_points_per_occupied_cell, 2)});
   emitTable(t, o.format);
+}
+
+/// One process: the files concatenated, one build (any origin).
+GridOutcome buildOne(const GridOptions& o) {
+  GridOutcome g;
+  LoadedCloud loaded = loadTimed(o.files[0]);
+  g.load_s = loaded.seconds;
+  for (std::size_t i = 1; i < o.files.size(); ++i) {
+    const LoadedCloud more = loadTimed(o.files[i]);
+    g.load_s += more.seconds;
+    *loaded.cloud += *more.cloud;
+  }
+  g.input_points = loaded.cloud->size();
+  const auto t1 = std::chrono::steady_clock::now();
+  OccupancyGrid<pcl::PointXYZ> grid;
+  grid.setCellSize(o.cell_size);
+  grid.setOrigin(o.origin == "world" ? GridOrigin::WorldAligned : GridOrigin::CloudMinimum);
+  grid.setInputCloud(loaded.cloud);
+  grid.filter(g.means);
+  g.grid_s = secondsSince(t1);
+  g.stats = grid.getStatistics();
+  g.cells = grid.getCells();
+  return g;
+}
+
+/// The slowest rank's seconds (load, and build + exchange since t0), on rank 0.
+void finishSeconds(const Ranks& ranks, GridOutcome& g, std::chrono::steady_clock::time_point t0) {
+  g.grid_s = secondsSince(t0) - g.load_s;
+  std::vector<double> seconds = {g.load_s, g.grid_s};
+  ranks.max(seconds);
+  g.load_s = seconds[0];
+  g.grid_s = seconds[1];
+}
+
+/// Distributed: each rank bins its share of the files one at a time (world-aligned), the cells
+/// are reduced over the ranks; rank 0 gets the outcome (the others an empty one).
+GridOutcome buildRanks(const GridOptions& o, const Ranks& ranks) {
+  GridOutcome g;
+  GridAccumulator local(o.cell_size);
+  OccupancyGrid<pcl::PointXYZ> grid;
+  grid.setCellSize(o.cell_size);
+  grid.setOrigin(GridOrigin::WorldAligned);
+  grid.setNumberOfThreads(ranks.threads(0));
+  const auto t0 = std::chrono::steady_clock::now();
+  double load_s = 0.0;
+  const auto [first, last] = ranks.share(o.files.size());
+  for (std::size_t i = first; i < last; ++i) {
+    const LoadedCloud loaded = loadTimed(o.files[i]);
+    load_s += loaded.seconds;
+    grid.setInputCloud(loaded.cloud);
+    grid.compute();
+    local.add({grid.getLayout(), grid.getCells(), grid.getStatistics()}, loaded.cloud->size());
+  }
+  g.load_s = load_s;
+  if (o.out.empty() && o.cells.empty()) {  // statistics only: no cells gathered on rank 0
+    const GridSummary all = ranks.reduceSummary(local);
+    finishSeconds(ranks, g, t0);
+    g.input_points = all.input_points;
+    g.stats = gridStatisticsOf(all, o.cell_size).stats;
+    return g;
+  }
+  const GridAccumulator all = ranks.reduce(local);
+  finishSeconds(ranks, g, t0);
+  if (!ranks.isRoot()) return g;
+  const GridResult r = all.result();
+  g.input_points = all.inputPoints();
+  g.stats = r.stats;
+  g.cells = r.cells;
+  g.means.resize(r.cells.size());  // as OccupancyGrid::filter makes them
+  for (std::size_t i = 0; i < r.cells.size(); ++i) {
+    g.means[i].x = static_cast<float>(r.cells[i].mean.x());
+    g.means[i].y = static_cast<float>(r.cells[i].mean.y());
+    g.means[i].z = static_cast<float>(r.cells[i].mean.z());
+  }
+  g.means.width = static_cast<std::uint32_t>(g.means.size());
+  g.means.height = 1;
+  g.means.is_dense = true;
+  return g;
+}
+
+void runGrid(GridOptions o) {
+  if (o.distributed && o.origin_given && o.origin != "world")
+    throw UsageError("--distributed needs --origin world (cells must be world-aligned to merge)");
+  const Ranks ranks(o.distributed);
+  if (o.distributed) o.origin = "world";
+  ranks.run([&] {
+    const GridOutcome g = o.distributed ? buildRanks(o, ranks) : buildOne(o);
+    if (ranks.isRoot()) emitGrid(o, g);
+  });
 }
 
 }  // namespace
@@ -65,7 +162,8 @@ void runGrid(const GridOptions& o) {
 void addGridCommand(CLI::App& app) {
   auto o = std::make_shared<GridOptions>();
   CLI::App* sub = app.add_subcommand("grid", "Occupancy grid: cell counts and means");
-  sub->add_option("file", o->file, "Point cloud (.pcd, .ply, .bin)")->required();
+  sub->add_option("file", o->files, "Point clouds (.pcd, .ply, .bin): one input, concatenated")
+      ->required();
   sub->add_option("--cell-size", o->cell_size, "Cell edge in metres")
       ->required()
       ->check(kFinitePositive);
@@ -73,9 +171,13 @@ void addGridCommand(CLI::App& app) {
                   "cloud-min: index = floor((p - min)/cell) (the study's); "
                   "world: floor(p/cell) (pcl::VoxelGrid's)")
       ->check(CLI::IsMember({"cloud-min", "world"}))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->each([o](const std::string&) { o->origin_given = true; });
   sub->add_option("--out", o->out, "Write the cell means as a PCD");
   sub->add_option("--cells", o->cells, "Write one CSV row per occupied cell");
+  sub->add_flag("--distributed", o->distributed,
+                "Run as MPI ranks (mpirun -np N metricmap grid ...): each rank bins its share of "
+                "the files, cells are reduced by tile; needs --origin world (the default then)");
   addFormatOption(*sub, o->format, {"table", "csv", "json"});
   addPcdFormatOption(*sub, o->pcd_format);
   sub->callback([o] { runGrid(*o); });

@@ -1,6 +1,8 @@
 // metricmap occupancy INPUT...: KITTI scans or PCD files (VIEWPOINT = sensor pose) cast into a
 // probabilistic voxel map (LogOddsMap), written as OctoMap .bt/.ot, occupied voxel centres and
 // a trinary map_server map from a height band. A .bt/.ot INPUT is read and exported instead.
+// With --distributed (under mpirun) each rank casts its contiguous share of the frames or files
+// and the voxels are merged over MPI (ranks.h); rank 0 writes the outputs.
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -22,6 +24,7 @@
 #include "metricmap/occupancy/occupancy_export.h"
 #include "metricmap/occupancy/octomap_io.h"
 #include "octomap_quiet.h"
+#include "ranks.h"
 #include "table.h"
 
 namespace metricmap::cli {
@@ -36,7 +39,7 @@ struct OccupancyOptions {
   std::string out_bt, out_ot, out_cloud, out_map, map_preview, band, format = "table";
   std::string pcd_format = "binary";
   double resolution = kUnset, max_range = kUnset;
-  bool resolution_given = false, max_range_given = false;
+  bool resolution_given = false, max_range_given = false, distributed = false;
 };
 
 bool endsWith(const std::string& s, const std::string& suffix) {
@@ -81,10 +84,11 @@ void requireViewpoint(const std::string& path) {
 struct Totals {
   std::size_t frames = 0, points = 0, beams = 0, cut = 0, non_finite = 0;
   double load_s = 0, insert_s = 0, write_s = 0;
+  double insert_cpu_s = -1;  ///< distributed: insert seconds summed over the ranks
 };
 
-void castScans(const OccupancyOptions& o, LogOddsMap& map, Totals& tot) {
-  const bool progress = isatty(STDERR_FILENO) != 0;
+void castScans(const OccupancyOptions& o, const Ranks& ranks, LogOddsMap& map, Totals& tot) {
+  const bool progress = isatty(STDERR_FILENO) != 0 && !ranks.distributed();
   const auto t_start = std::chrono::steady_clock::now();
   auto insert = [&](const Cloud& cloud, const Eigen::Vector3f* origin, std::size_t dropped) {
     const auto t = std::chrono::steady_clock::now();
@@ -107,14 +111,16 @@ void castScans(const OccupancyOptions& o, LogOddsMap& map, Totals& tot) {
     if (o.frames.empty()) throw CLI::ValidationError("frames", "a KITTI root needs --frames");
     const std::vector<std::size_t> frames = parseFrameList(o.frames);
     const KittiSequence seq{o.inputs[0], o.sequence};
-    for (std::size_t f : frames) {
-      if (access(seq.scan(f).c_str(), R_OK) != 0) throw InputError(seq.scan(f) + ": missing frame");
+    const auto [first, last] = ranks.share(frames.size());
+    for (std::size_t k = first; k < last; ++k) {
+      const std::string scan = seq.scan(frames[k]);
+      if (access(scan.c_str(), R_OK) != 0) throw InputError(scan + ": missing frame");
     }
     const Eigen::Isometry3d tr = readKittiCalibTr(seq.calib());
     const auto poses =
         readKittiPoses(seq.poses(), *std::max_element(frames.begin(), frames.end()) + 1);
     const KittiWorld world = o.world == "camera" ? KittiWorld::Camera : KittiWorld::Velodyne;
-    for (std::size_t k = 0; k < frames.size(); ++k) {
+    for (std::size_t k = first; k < last; ++k) {
       auto t = std::chrono::steady_clock::now();
       Cloud scan, world_scan;
       const LoadReport lr = loadCloud(seq.scan(frames[k]), scan);
@@ -123,7 +129,7 @@ void castScans(const OccupancyOptions& o, LogOddsMap& map, Totals& tot) {
       tot.load_s += secondsSince(t);
       const Eigen::Vector3f origin = to_world.translation().cast<float>();
       insert(world_scan, &origin, lr.nonfinite_dropped);
-      report(k + 1, frames.size());
+      report(k + 1 - first, last - first);
     }
   } else {
     for (const std::string& path : o.inputs) {
@@ -132,20 +138,40 @@ void castScans(const OccupancyOptions& o, LogOddsMap& map, Totals& tot) {
                          ": scans must be PCD files (VIEWPOINT = sensor pose) or one "
                          "KITTI root");
     }
-    for (std::size_t k = 0; k < o.inputs.size(); ++k) {
+    const auto [first, last] = ranks.share(o.inputs.size());
+    for (std::size_t k = first; k < last; ++k) {
       auto t = std::chrono::steady_clock::now();
       requireViewpoint(o.inputs[k]);
       Cloud scan;
       const LoadReport lr = loadCloud(o.inputs[k], scan);
       tot.load_s += secondsSince(t);
       insert(scan, nullptr, lr.nonfinite_dropped);
-      report(k + 1, o.inputs.size());
+      report(k + 1 - first, last - first);
     }
   }
   if (progress) std::fprintf(stderr, "\n");
 }
 
-void run(const OccupancyOptions& o) {
+/// The job's totals on rank 0: counts summed, seconds the slowest rank's (insert: summed, for
+/// the time per scan).
+void reduceTotals(const Ranks& ranks, Totals& tot) {
+  std::vector<std::uint64_t> counts = {
+      tot.frames, tot.points,     tot.beams,
+      tot.cut,    tot.non_finite, static_cast<std::uint64_t>(tot.insert_s * 1e9)};
+  std::vector<double> seconds = {tot.load_s, tot.insert_s};
+  ranks.sum(counts);
+  ranks.max(seconds);
+  tot.frames = counts[0];
+  tot.points = counts[1];
+  tot.beams = counts[2];
+  tot.cut = counts[3];
+  tot.non_finite = counts[4];
+  tot.insert_cpu_s = static_cast<double>(counts[5]) * 1e-9;
+  tot.load_s = seconds[0];
+  tot.insert_s = seconds[1];
+}
+
+void run(const OccupancyOptions& o, const Ranks& ranks) {
   const bool from_file =
       o.inputs.size() == 1 && (endsWith(o.inputs[0], ".bt") || endsWith(o.inputs[0], ".ot"));
   if (!o.out_map.empty() && o.band.empty())
@@ -167,7 +193,12 @@ void run(const OccupancyOptions& o) {
   auto t = std::chrono::steady_clock::now();
   LogOddsMap map = from_file ? readOctomapQuietly(o.inputs[0]) : LogOddsMap(params);
   if (from_file) tot.load_s = secondsSince(t);
-  if (!from_file) castScans(o, map, tot);
+  if (!from_file) castScans(o, ranks, map, tot);
+  if (ranks.distributed()) {
+    map = ranks.reduce(map);
+    reduceTotals(ranks, tot);
+    if (!ranks.isRoot()) return;
+  }
 
   // everything that can fail on the data is computed before the first file is written
   t = std::chrono::steady_clock::now();
@@ -182,8 +213,9 @@ void run(const OccupancyOptions& o) {
 
   const LogOddsMemory mem = map.memory();
   const std::size_t occupied = map.occupiedVoxels();
+  const double insert_s = tot.insert_cpu_s >= 0 ? tot.insert_cpu_s : tot.insert_s;
   const double ms_per_scan =
-      tot.frames == 0 ? 0.0 : 1000.0 * tot.insert_s / static_cast<double>(tot.frames);
+      tot.frames == 0 ? 0.0 : 1000.0 * insert_s / static_cast<double>(tot.frames);
   if (o.format == "json") {
     nlohmann::json j;
     j["frames"] = tot.frames;
@@ -242,12 +274,20 @@ void addOccupancyCommand(CLI::App& app) {
   sub->add_option("--band", o->band, "Height band of --out-map: zmin,zmax (m)");
   sub->add_option("--map-preview", o->map_preview, "Also write --out-map as PNG");
   addPcdFormatOption(*sub, o->pcd_format);
+  sub->add_flag("--distributed", o->distributed,
+                "Run as MPI ranks (mpirun -np N metricmap occupancy ...): each rank casts its "
+                "share of the frames or files, voxels are merged by tile; rank 0 writes");
   addFormatOption(*sub, o->format, {"table", "json"});
   sub->callback([o, sub] {
     OccupancyOptions opts = *o;
     opts.resolution_given = sub->count("--resolution") > 0;
     opts.max_range_given = sub->count("--max-range") > 0;
-    run(opts);
+    const bool from_file = opts.inputs.size() == 1 &&
+                           (endsWith(opts.inputs[0], ".bt") || endsWith(opts.inputs[0], ".ot"));
+    if (opts.distributed && from_file)
+      throw UsageError("--distributed casts scans; a .bt/.ot input is exported by one process");
+    const Ranks ranks(opts.distributed);
+    ranks.run([&] { run(opts, ranks); });
   });
 }
 

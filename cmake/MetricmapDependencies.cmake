@@ -13,3 +13,10 @@ endif()
 # Image decoders with error reporting (damaged or hostile depth/RGB images).
 find_package(PNG REQUIRED)
 find_package(TIFF REQUIRED)
+# MPI (OpenMPI on Debian) for the distributed library metricmap_mpi and `--distributed`:
+# on by default when found; the core library never links it.
+find_package(MPI QUIET COMPONENTS CXX)
+option(METRICMAP_WITH_MPI "Build metricmap_mpi and the CLI's --distributed (needs MPI)" ${MPI_CXX_FOUND})
+if(METRICMAP_WITH_MPI AND NOT MPI_CXX_FOUND)
+  message(FATAL_ERROR "METRICMAP_WITH_MPI is ON but no MPI was found (apt install libopenmpi-dev openmpi-bin)")
+endif()

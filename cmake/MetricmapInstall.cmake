@@ -14,7 +14,7 @@ foreach(part core io mapping)
 endforeach()
 install(TARGETS metricmap EXPORT metricmapTargets)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/metricmap DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-  FILES_MATCHING PATTERN "*.h" PATTERN "*.hpp")
+  FILES_MATCHING PATTERN "*.h" PATTERN "*.hpp" PATTERN "distributed" EXCLUDE)
 install(FILES ${PROJECT_BINARY_DIR}/src/generated/metricmap/version.h
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/metricmap)
 

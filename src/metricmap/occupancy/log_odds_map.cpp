@@ -153,6 +153,29 @@ void LogOddsMap::merge(const LogOddsMap& other) {
   }
 }
 
+void LogOddsMap::forEachBlock(
+    const std::function<void(std::uint64_t, const std::uint64_t*, const float*)>& visit) const {
+  for (const VoxelBlock& b : blocks_) visit(b.key, b.known, b.log_odds);
+}
+
+void LogOddsMap::mergeBlock(std::uint64_t block_key, const std::uint64_t* known,
+                            const float* values) {
+  VoxelBlock& blk = blockFor(block_key);
+  for (int w = 0; w < kBlockWords; ++w) {
+    std::uint64_t bits = known[w];
+    known_ += static_cast<std::size_t>(__builtin_popcountll(bits & ~blk.known[w]));
+    const std::uint64_t unknown = ~blk.known[w];
+    blk.known[w] |= bits;
+    while (bits != 0) {
+      const int i = __builtin_ctzll(bits);
+      bits &= bits - 1;
+      float& v = blk.log_odds[w * 64 + i];
+      const float add = *values++;
+      v = (unknown >> i) & 1 ? add : clampLogOdds(v + add, clamp_min_, clamp_max_);
+    }
+  }
+}
+
 void LogOddsMap::setLogOdds(const VoxelKey& key, float log_odds) {
   if (!inKeySpace(key)) {
     std::ostringstream msg;

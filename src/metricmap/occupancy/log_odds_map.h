@@ -85,6 +85,17 @@ class LogOddsMap {
   /// \throws std::invalid_argument when resolutions or sensor models differ
   void merge(const LogOddsMap& other);
 
+  /// \brief Visit every block of 8^3 voxels holding a known voxel: its packed block key
+  /// (packVoxelKey of voxel key >> 3), kBlockWords words of known bits (voxel i = x + 8 y +
+  /// 64 z inside the block) and its kBlockVoxels log-odds (meaningful where known).
+  void forEachBlock(
+      const std::function<void(std::uint64_t, const std::uint64_t*, const float*)>& visit) const;
+
+  /// \brief Merge a block as merge() does, voxel by voxel: `values` holds one log-odds per set
+  /// bit of `known`, in bit order. The caller checks the key, the bits and that values are
+  /// finite (log_odds_transfer.cpp does).
+  void mergeBlock(std::uint64_t block_key, const std::uint64_t* known, const float* values);
+
   /// \brief Set a voxel's log-odds as given (finite), marking it known. Used by readers.
   /// \throws CapacityError outside the key space; std::invalid_argument for NaN/Inf
   void setLogOdds(const VoxelKey& key, float log_odds);

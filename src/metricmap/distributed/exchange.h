@@ -1,0 +1,36 @@
+#pragma once
+/// \file exchange.h
+/// \brief Byte-buffer collectives over MPI_COMM_WORLD (metricmap_mpi; no <mpi.h> here).
+/// Every rank must call them in the same order.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace metricmap::distributed {
+
+using Bytes = std::vector<std::uint8_t>;
+
+/// \brief Rank and size of MPI_COMM_WORLD (MPI must be initialised: see MpiSession).
+int worldRank();
+int worldSize();
+
+/// \brief MPI_Alltoallv: `outgoing[k]` goes to rank k; returns what each rank sent to this one
+/// (index = source rank).
+/// \throws CapacityError when a rank would send or receive 2 GiB or more in one exchange (MPI's
+/// int counts): use more ranks
+std::vector<Bytes> exchangeBuffers(const std::vector<Bytes>& outgoing);
+
+/// \brief MPI_Gatherv to rank 0: there, one buffer per rank (index = rank); elsewhere empty.
+/// \throws CapacityError when rank 0 would receive 2 GiB or more
+std::vector<Bytes> gatherBuffers(const Bytes& mine);
+
+/// \brief Element-wise sum over the ranks, result on rank 0 (others keep theirs).
+void sumToRoot(std::vector<std::uint64_t>& values);
+/// \brief Element-wise minimum / maximum of int64 values over the ranks, result on rank 0.
+void minToRoot(std::vector<std::int64_t>& values);
+void maxToRoot(std::vector<std::int64_t>& values);
+/// \brief Element-wise maximum over the ranks, result on rank 0.
+void maxToRoot(std::vector<double>& values);
+
+}  // namespace metricmap::distributed

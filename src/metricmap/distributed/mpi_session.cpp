@@ -1,0 +1,62 @@
+#include "metricmap/distributed/mpi_session.h"
+
+#include <mpi.h>
+
+#include <cstdio>
+#include <iostream>
+#include <new>
+#include <thread>
+
+namespace metricmap::distributed {
+
+MpiSession::MpiSession() {
+  int ready = 0;
+  MPI_Initialized(&ready);
+  if (!ready) MPI_Init(nullptr, nullptr);
+  // errors in MPI calls end the job (the default, stated here on purpose)
+  MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_ARE_FATAL);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  MPI_Comm local;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &local);
+  MPI_Comm_size(local, &local_size_);
+  MPI_Comm_free(&local);
+}
+
+MpiSession::~MpiSession() {
+  int done = 0;
+  MPI_Finalized(&done);
+  if (!done) MPI_Finalize();
+}
+
+unsigned MpiSession::threadsPerRank() const {
+  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+  return std::max(1u, hw / static_cast<unsigned>(std::max(1, local_size_)));
+}
+
+void MpiSession::runOrAbort(const std::function<void()>& work) const {
+  try {
+    work();
+  } catch (const std::bad_alloc&) {
+    abort("out of memory (rank " + std::to_string(rank_) + ")");
+  } catch (const std::exception& e) {
+    abort(e.what());
+  }
+}
+
+void MpiSession::abort(const std::string& message, int code) {
+  std::cout.flush();
+  std::cerr << "metricmap: error: " << message << std::endl;
+  std::fflush(stderr);
+  MPI_Abort(MPI_COMM_WORLD, code);
+  std::_Exit(code);  // MPI_Abort does not return; in case it does
+}
+
+std::pair<std::size_t, std::size_t> shareOf(std::size_t n, int rank, int ranks) {
+  const std::size_t r = static_cast<std::size_t>(rank), p = static_cast<std::size_t>(ranks);
+  const std::size_t base = n / p, extra = n % p;
+  const std::size_t first = r * base + std::min(r, extra);
+  return {first, first + base + (r < extra ? 1 : 0)};
+}
+
+}  // namespace metricmap::distributed
