@@ -64,7 +64,7 @@ void runGrid(const GridOptions& o) {
   }
   Table t({"file", "cell_size", "origin", "points", "total_cells", "occupied_cells", "empty_cells",
            "mean_points_per_occupied_cell"});
-  t.addRow({o.file, fixed(o.cell_size, 3), o.origin, std::to_string(s.points),
+  t.addRow({o.file, readable(o.cell_size), o.origin, std::to_string(s.points),
             std::to_string(s.total_cells), std::to_string(s.occupied_cells),
             std::to_string(s.empty_cells), fixed(s.mean_points_per_occupied_cell, 2)});
   emitTable(t, o.format);
@@ -78,14 +78,14 @@ void addGridCommand(CLI::App& app) {
   sub->add_option("file", o->file, "Point cloud (.pcd, .ply, .bin)")->required();
   sub->add_option("--cell-size", o->cell_size, "Cell edge in metres")
       ->required()
-      ->check(kFinitePositive);
+      ->check(kFinitePositiveFloat);
   sub->add_option("--origin", o->origin,
                   "cloud-min: index = floor((p - min)/cell) (the study's); "
                   "world: floor(p/cell) (pcl::VoxelGrid's)")
       ->check(CLI::IsMember({"cloud-min", "world"}))
       ->capture_default_str();
-  sub->add_option("--out", o->out, "Write the cell means as a PCD");
-  sub->add_option("--cells", o->cells, "Write one CSV row per occupied cell");
+  sub->add_option("--out", o->out, "Write the cell means as a PCD")->check(kOutputFile);
+  sub->add_option("--cells", o->cells, "Write one CSV row per occupied cell")->check(kOutputFile);
   addFormatOption(*sub, o->format, {"table", "csv", "json"});
   addPcdFormatOption(*sub, o->pcd_format);
   sub->callback([o] { runGrid(*o); });

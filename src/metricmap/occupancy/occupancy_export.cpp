@@ -64,9 +64,16 @@ TrinaryMap projectBand(const LogOddsMap& map, double z_min, double z_max) {
 
 void writeTrinaryMapServer(const TrinaryMap& map, const std::string& pgm_path,
                            const std::string& preview_png) {
-  if (map.width == 0) throw std::invalid_argument("the trinary map is empty");
   const std::size_t slash = pgm_path.find_last_of('/');
   const std::string image = slash == std::string::npos ? pgm_path : pgm_path.substr(slash + 1);
+  const std::string stem = pgm_path.substr(0, pgm_path.find_last_of('.'));
+  writeTrinaryMapServer(map, pgm_path, stem + ".yaml", preview_png, image);
+}
+
+void writeTrinaryMapServer(const TrinaryMap& map, const std::string& pgm_path,
+                           const std::string& yaml_path, const std::string& preview_png,
+                           const std::string& image) {
+  if (map.width == 0) throw std::invalid_argument("the trinary map is empty");
   YAML::Emitter yaml;
   yaml.SetDoublePrecision(10);
   yaml << YAML::BeginMap << YAML::Key << "image" << YAML::Value << image << YAML::Key << "mode"
@@ -76,8 +83,7 @@ void writeTrinaryMapServer(const TrinaryMap& map, const std::string& pgm_path,
        << YAML::Key << "occupied_thresh" << YAML::Value << 0.65 << YAML::Key << "free_thresh"
        << YAML::Value << 0.196 << YAML::EndMap;
   writePgm(pgm_path, map.width, map.height, map.cells);
-  const std::string stem = pgm_path.substr(0, pgm_path.find_last_of('.'));
-  writeTextAtomic(stem + ".yaml", std::string(yaml.c_str()) + "\n");
+  writeTextAtomic(yaml_path, std::string(yaml.c_str()) + "\n");
   if (!preview_png.empty()) writePng(preview_png, map.width, map.height, 1, map.cells);
 }
 

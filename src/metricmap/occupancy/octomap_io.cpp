@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -11,6 +12,7 @@
 
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_writer.h"
+#include "metricmap/io/input_file.h"
 #include "metricmap/occupancy/octomap_file_check.h"
 
 namespace metricmap {
@@ -59,14 +61,6 @@ std::unique_ptr<octomap::OcTree> toOcTree(const LogOddsMap& map) {
   return tree;
 }
 
-std::string readAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open");
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw InputError(path + ": read error");
-  return bytes;
-}
-
 }  // namespace
 
 void writeOctomap(const LogOddsMap& map, const std::string& path) {
@@ -82,7 +76,8 @@ void writeOctomap(const LogOddsMap& map, const std::string& path) {
 
 LogOddsMap readOctomap(const std::string& path, const LogOddsParams& params,
                        std::size_t max_voxels) {
-  const std::string bytes = readAll(path);
+  // a regular file only (a FIFO blocks, /dev/zero never ends), read up to its size, in budget
+  const std::string bytes = readRegularFile(path, std::numeric_limits<std::uint64_t>::max());
   const OctomapFileInfo info = checkOctomapBytes(bytes, path);
   LogOddsParams p = params;
   p.resolution = info.resolution;
