@@ -66,6 +66,12 @@ if mount -t tmpfs -o size=64k tmpfs "$full" 2>/dev/null; then
   expect 1 "$full/m.bt: cannot write" -- "$MM" occupancy "$k" --frames 0 --resolution 0.2 --max-range 50 --out "$full/m.bt"
   fill
   expect 1 "$full/c.pcd: cannot write" -- "$MM" occupancy "$k" --frames 0 --resolution 0.2 --max-range 50 --out-cloud "$full/c.pcd" --pcd-format ascii
+  fill
+  expect 1 "$full/m.pgm: cannot write image" -- "$MM" kitti "$k" --frames 0 --out-map "$full/m.pgm" --map-resolution 0.1
+  fill
+  expect 1 "$full/o.pgm: cannot write image" -- "$MM" occupancy "$k" --frames 0 --resolution 0.2 --max-range 50 --out-map "$full/o.pgm" --band -1,1
+  fill
+  expect 1 "$full/hm_" -- "$MM" heightmap "$tum/TUM_depth.png" --camera "$tum/camera_primesense.json" --auto-floor --resolution 0.05 --map-size 200 --z-bins 0.1,1 --out-prefix "$full/hm"
   check "full disk: nothing left" test "$(ls "$full")" = filler
   umount "$full"
 else
