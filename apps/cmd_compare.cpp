@@ -151,6 +151,7 @@ void plot(const std::vector<Record>& records, const CompareOptions& o, const std
 }
 
 void runCompare(const CompareOptions& o) {
+  requireDistinctOutputs({{"--out", o.out}, {"--plot", o.plot}});
   std::vector<StudyConfig> configs;
   for (const std::string& text : o.configs) {
     StudyConfig c;

@@ -34,6 +34,7 @@ std::string cellsCsv(const std::vector<GridCell>& cells) {
 }
 
 void runGrid(const GridOptions& o) {
+  requireDistinctOutputs({{"--out", o.out}, {"--cells", o.cells}});
   const LoadedCloud loaded = loadTimed(o.file);
   const auto& cloud = loaded.cloud;
 

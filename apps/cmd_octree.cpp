@@ -38,6 +38,7 @@ std::string leavesCsv(const std::vector<OctreeNode>& nodes) {
 }
 
 void runOctree(const OctreeOptions& o) {
+  requireDistinctOutputs({{"--out", o.out}, {"--leaves", o.leaves}});
   const LoadedCloud loaded = loadTimed(o.file);
   const auto& cloud = loaded.cloud;
 

@@ -87,6 +87,10 @@ expect 2 "both write" -- "$MM" occupancy "$k" --frames 0 --resolution 0.2 --max-
 expect 2 "both write" -- "$MM" occupancy "$k" --frames 0 --resolution 0.2 --max-range 50 --out "$o/a.bt" --out-ot "$o/./a.bt"
 expect 2 "both write" -- "$MM" occupancy "$k" --frames 0 --resolution 0.2 --max-range 50 --out-map "$o/m.pgm" --band -1,1 --map-preview "$o/m.yaml"
 expect 2 "--out" -- "$MM" occupancy "$k" --frames 0 --resolution 0.2 --max-range 50 --out ''
+expect 2 "--cells and --out both write" -- "$MM" grid "$bun" --cell-size 0.05 --out "$o/x.csv" --cells "$o/./x.csv"
+expect 2 "--leaves and --out both write" -- "$MM" octree "$bun" --max-points 100 --min-cell-size 0.01 --out "$o/x.csv" --leaves "$o/x.csv"
+expect 2 "--plot and --out both write" -- "$MM" compare "$bun" --out "$o/x.svg" --plot "$o/x.svg"
+for opt in --out --cells; do expect 2 "$opt" -- "$MM" grid "$bun" --cell-size 0.05 "$opt" ''; done
 expect 2 "--out-map" -- "$MM" kitti "$k" --frames 0 --out-map ''
 expect 2 "--out-cloud" -- "$MM" kitti "$k" --frames 0 --out-cloud ''
 for r in 0 -0.2 nan 0x10 1e999; do
