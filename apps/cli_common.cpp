@@ -1,7 +1,9 @@
 #include "cli_common.h"
 
 #include <cmath>
+#include <filesystem>
 #include <iostream>
+#include <limits>
 
 #include "metricmap/common/parse_number.h"
 #include "metricmap/io/cloud_reader.h"
@@ -40,6 +42,21 @@ const CLI::Validator kFinitePositive(
     },
     "POSITIVE");
 
+const CLI::Validator kFinitePositiveFloat(
+    [](std::string& s) -> std::string {
+      double v = 0.0;
+      std::string why = checkedDouble(s, v);
+      if (why.empty() && !(v > 0.0))
+        why = "must be a finite number > 0, got '" + quoteForMessage(s) + "'";
+      if (why.empty() &&
+          !(v >= std::numeric_limits<float>::min() && v <= std::numeric_limits<float>::max())) {
+        why = "'" + quoteForMessage(s) +
+              "' is outside the single-precision range (1.2e-38 to 3.4e38)";
+      }
+      return why;
+    },
+    "POSITIVE");
+
 const CLI::Validator kFiniteNonNegative(
     [](std::string& s) -> std::string {
       double v = 0.0;
@@ -57,6 +74,30 @@ const CLI::Validator kCount(
       return std::string();
     },
     "COUNT");
+
+const CLI::Validator kOutputFile(
+    [](std::string& s) -> std::string {
+      return s.empty() ? std::string("empty file name: nothing would be written") : std::string();
+    },
+    "FILE");
+
+void requireDistinctOutputs(const std::vector<std::pair<std::string, std::string>>& outputs) {
+  namespace fs = std::filesystem;
+  std::vector<std::pair<std::string, std::string>> seen;  // canonical path, option
+  for (const auto& [option, path] : outputs) {
+    if (path.empty()) continue;
+    std::error_code ec;
+    fs::path canonical = fs::weakly_canonical(path, ec);
+    const std::string key = ec ? fs::path(path).lexically_normal().string() : canonical.string();
+    for (const auto& [other, other_option] : seen) {
+      if (other == key) {
+        throw UsageError(option + " and " + other_option + " both write '" + quoteForMessage(path) +
+                         "'");
+      }
+    }
+    seen.emplace_back(key, option);
+  }
+}
 
 LoadReport loadWithWarnings(const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud) {
   LoadReport report = loadCloud(path, cloud);

@@ -27,11 +27,23 @@ extern const CLI::Validator kFinite;
 /// \brief A finite number > 0 (CLI11's PositiveNumber lets NaN through).
 extern const CLI::Validator kFinitePositive;
 
+/// \brief A finite number > 0 that a float holds as a normal number (the grid and octree sizes
+/// are float: 1e308 would become inf, 1e-300 zero).
+extern const CLI::Validator kFinitePositiveFloat;
+
 /// \brief A finite number >= 0.
 extern const CLI::Validator kFiniteNonNegative;
 
 /// \brief A whole number >= 0 written in decimal digits.
 extern const CLI::Validator kCount;
+
+/// \brief An output file name: not empty (`--out ''` would write nothing and succeed).
+extern const CLI::Validator kOutputFile;
+
+/// \brief Usage error (exit 2) when two of the outputs name the same file; `outputs` holds
+/// (option, path) pairs, empty paths skipped. Paths are compared after weakly_canonical, so
+/// "a.bt" and "./a.bt" are the same file.
+void requireDistinctOutputs(const std::vector<std::pair<std::string, std::string>>& outputs);
 
 /// \brief Seconds since `start`.
 inline double secondsSince(std::chrono::steady_clock::time_point start) {

@@ -151,6 +151,7 @@ void plot(const std::vector<Record>& records, const CompareOptions& o, const std
 }
 
 void runCompare(const CompareOptions& o) {
+  requireDistinctOutputs({{"--out", o.out}, {"--plot", o.plot}});
   std::vector<StudyConfig> configs;
   for (const std::string& text : o.configs) {
     StudyConfig c;
@@ -194,7 +195,8 @@ void addCompareCommand(CLI::App& app) {
   sub->add_flag("--pcl-octree", o->pcl_octree,
                 "Also run pcl::octree::OctreePointCloudPointVector (dynamic depth) on each job");
   addFormatOption(*sub, o->format, {"table", "markdown", "csv", "json"});
-  sub->add_option("--out", o->out, "Write the output to this file instead of stdout");
+  sub->add_option("--out", o->out, "Write the output to this file instead of stdout")
+      ->check(kOutputFile);
   sub->add_option("--plot", o->plot,
                   "Also draw the figures as grouped bars (.png or .svg; needs X: xvfb-run -a)");
   sub->callback([o] { runCompare(*o); });

@@ -59,7 +59,7 @@ void addDepthToCloudCommand(CLI::App& app) {
   sub->add_option("depth", o->depth, "16-bit depth image (.png, .tif, .tiff)")->required();
   sub->add_option("--rgb", o->rgb, "Registered 8-bit RGB image: write x y z rgb");
   addCameraOptions(*sub, o->camera);
-  sub->add_option("--out", o->out, "Output .pcd")->required();
+  sub->add_option("--out", o->out, "Output .pcd")->required()->check(kOutputFile);
   addPcdFormatOption(*sub, o->pcd_format);
   sub->callback([o] { run(*o); });
 }

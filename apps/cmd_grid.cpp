@@ -62,7 +62,7 @@ void emitGrid(const GridOptions& o, const GridOutcome& g) {
   }
   Table t({"file", "cell_size", "origin", "points", "total_cells", "occupied_cells", "empty_cells",
            "mean_points_per_occupied_cell"});
-  t.addRow({files, fixed(o.cell_size, 3), o.origin, std::to_string(s.points),
+  t.addRow({files, readable(o.cell_size), o.origin, std::to_string(s.points),
             std::to_string(s.total_cells), std::to_string(s.occupied_cells),
             std::to_string(s.empty_cells), fixed(s.mean_points_per_occupied_cell, 2)});
   emitTable(t, o.format);
@@ -147,6 +147,7 @@ GridOutcome buildRanks(const GridOptions& o, const Ranks& ranks) {
 }
 
 void runGrid(GridOptions o) {
+  requireDistinctOutputs({{"--out", o.out}, {"--cells", o.cells}});
   if (o.distributed && o.origin_given && o.origin != "world")
     throw UsageError("--distributed needs --origin world (cells must be world-aligned to merge)");
   const Ranks ranks(o.distributed);
@@ -166,15 +167,15 @@ void addGridCommand(CLI::App& app) {
       ->required();
   sub->add_option("--cell-size", o->cell_size, "Cell edge in metres")
       ->required()
-      ->check(kFinitePositive);
+      ->check(kFinitePositiveFloat);
   sub->add_option("--origin", o->origin,
                   "cloud-min: index = floor((p - min)/cell) (the study's); "
                   "world: floor(p/cell) (pcl::VoxelGrid's)")
       ->check(CLI::IsMember({"cloud-min", "world"}))
       ->capture_default_str()
       ->each([o](const std::string&) { o->origin_given = true; });
-  sub->add_option("--out", o->out, "Write the cell means as a PCD");
-  sub->add_option("--cells", o->cells, "Write one CSV row per occupied cell");
+  sub->add_option("--out", o->out, "Write the cell means as a PCD")->check(kOutputFile);
+  sub->add_option("--cells", o->cells, "Write one CSV row per occupied cell")->check(kOutputFile);
   sub->add_flag("--distributed", o->distributed,
                 "Run as MPI ranks (mpirun -np N metricmap grid ...): each rank bins its share of "
                 "the files, cells are reduced by tile; needs --origin world (the default then)");

@@ -12,6 +12,7 @@
 #include "metricmap/camera/depth_to_cloud.h"
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/common/parse_number.h"
+#include "metricmap/common/rigid_transform.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/array_writers.h"
 #include "metricmap/io/input_file.h"
@@ -53,6 +54,11 @@ Eigen::Isometry3d poseFromMatrix(const std::string& text) {
     throw CLI::ValidationError("--pose-matrix", "needs 16 numbers (row-major 4x4)");
   Eigen::Matrix4d t;
   for (int i = 0; i < 16; ++i) t(i / 4, i % 4) = m[static_cast<std::size_t>(i)];
+  try {
+    checkRigidTransform(t, "--pose-matrix");  // a zero matrix would collapse every point
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
   Eigen::Isometry3d pose;
   pose.matrix() = t;
   return pose;
@@ -128,6 +134,8 @@ void run(const HeightMapOptions& o) {
   }
   HeightMap& map = *map_holder;
 
+  const Eigen::Isometry3d given_pose =
+      o.pose_matrix.empty() ? Eigen::Isometry3d::Identity() : poseFromMatrix(o.pose_matrix);
   std::vector<Eigen::Isometry3d> trajectory;
   if (!o.trajectory.empty()) trajectory = readTumTrajectory(o.trajectory, o.depths.size());
   nlohmann::json floors = nlohmann::json::array();
@@ -147,7 +155,7 @@ void run(const HeightMapOptions& o) {
     } else if (!trajectory.empty()) {
       pose = trajectory[f];
     } else if (!o.pose_matrix.empty()) {
-      pose = poseFromMatrix(o.pose_matrix);
+      pose = given_pose;
     } else {
       pose = cameraToMap(o.camera_height, o.pitch_deg * kDeg, o.yaw_deg * kDeg);
     }
@@ -166,7 +174,7 @@ void run(const HeightMapOptions& o) {
                       {"z_bins", params.z_bins},
                       {"bin_counts", s.bin_counts},
                       {"points_outside_map", s.points_outside_map},
-                      {"valid_pixels", s.valid_points},
+                      {"points", s.valid_points},  // finite points binned or outside
                       {"obstacle_cells", map.obstacleCells()},
                       {"explored_cells", map.exploredCells()},
                       {"floor", floors.empty() ? nlohmann::json(nullptr) : floors.front()},
@@ -176,8 +184,7 @@ void run(const HeightMapOptions& o) {
     emit(j.dump(2) + "\n", "");
     return;
   }
-  Table t(
-      {"frames", "valid_pixels", "outside_map", "obstacle_cells", "explored_cells", "bin_counts"});
+  Table t({"frames", "points", "outside_map", "obstacle_cells", "explored_cells", "bin_counts"});
   std::string bins;
   for (auto b : s.bin_counts) bins += (bins.empty() ? "" : " ") + std::to_string(b);
   t.addRow({std::to_string(s.frames), std::to_string(s.valid_points),
@@ -219,7 +226,8 @@ void addHeightMapCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--out-prefix", o->out_prefix,
                   "Writes PREFIX_obstacles.png, _explored.png, _layers.png, _counts.npy")
-      ->required();
+      ->required()
+      ->check(kOutputFile);
   addFormatOption(*sub, o->format, {"json", "table"});
   sub->callback([o] { run(*o); });
 }

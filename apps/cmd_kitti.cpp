@@ -55,11 +55,19 @@ std::vector<std::size_t> selectFrames(const KittiOptions& o) {
   }
 }
 
+/// Largest --perturb: 100 m (a pose error no registration could undo) and 180 degrees (any
+/// turn); beyond them a perturbed pose is not a physical one (1e308 m leaves the float range).
+constexpr double kMaxPerturbMetres = 100.0, kMaxPerturbDegrees = 180.0;
+
 /// Translation (m) and rotation (degrees) of --perturb T,R.
 std::vector<double> perturbation(const std::string& text) {
   std::vector<double> v = parseDoubleList(text, "perturbation");
-  if (v.size() != 2 || v[0] < 0.0 || v[1] < 0.0) {
-    throw std::invalid_argument("--perturb: expected T,R with T, R >= 0, got '" + text + "'");
+  if (v.size() != 2 || !(v[0] >= 0.0 && v[0] <= kMaxPerturbMetres) ||
+      !(v[1] >= 0.0 && v[1] <= kMaxPerturbDegrees)) {
+    throw std::invalid_argument(
+        "--perturb: expected T,R with 0 <= T <= 100 (m) and 0 <= R <= "
+        "180 (degrees), got '" +
+        quoteForMessage(text) + "'");
   }
   return v;
 }
@@ -150,6 +158,24 @@ void run(const KittiOptions& o) {
       o.perturb.empty() ? std::vector<double>{0.0, 0.0} : perturbation(o.perturb);
   const KittiWorld world = o.world == "velodyne" ? KittiWorld::Velodyne : KittiWorld::Camera;
   const ScanMapperConfig config = mapperConfig(o, world);
+  {
+    std::vector<std::pair<std::string, std::string>> outputs = {{"--out-poses", o.out_poses},
+                                                                {"--out-cloud", o.out_cloud}};
+    if (!o.out_map.empty()) {
+      const MapServerFiles files = mapServerFiles(o.out_map);
+      outputs.insert(outputs.end(), {{"--out-map", files.pgm},
+                                     {"--out-map (its .yaml)", files.yaml},
+                                     {"--out-map (its _preview.png)", files.preview_png},
+                                     {"--out-map (its _heat.png)", files.heat_png}});
+    }
+    if (!o.out_octomap.empty()) outputs.push_back({"--out-octomap", o.out_octomap});
+    if (!o.out_trinary.empty()) {
+      const MapServerFiles files = mapServerFiles(o.out_trinary);
+      outputs.insert(outputs.end(),
+                     {{"--out-trinary", files.pgm}, {"--out-trinary (its .yaml)", files.yaml}});
+    }
+    requireDistinctOutputs(outputs);
+  }
   const KittiSequence seq{o.root, o.sequence};
   for (std::size_t f : frames) {  // every scan must exist before any work is done
     if (access(seq.scan(f).c_str(), R_OK) != 0) throw InputError(seq.scan(f) + ": missing frame");
@@ -323,10 +349,11 @@ void addKittiCommand(CLI::App& app) {
   sub->add_option("--voxel", m.voxel, "Per-scan and global voxel size (m), 0: off")
       ->check(kFiniteNonNegative)
       ->capture_default_str();
-  sub->add_option("--out-cloud", o->out_cloud, "Write the global cloud (.pcd)");
+  sub->add_option("--out-cloud", o->out_cloud, "Write the global cloud (.pcd)")->check(kOutputFile);
   addPcdFormatOption(*sub, o->pcd_format);
   sub->add_option("--out-map", o->out_map,
-                  "map_server map: M.pgm + M.yaml, with M_preview.png and M_heat.png");
+                  "map_server map: M.pgm + M.yaml, with M_preview.png and M_heat.png")
+      ->check(kOutputFile);
   sub->add_option("--map-plane", o->map_plane, "Projection plane")
       ->check(CLI::IsMember({"xz", "xy", "yz"}))
       ->capture_default_str();
@@ -350,7 +377,8 @@ void addKittiCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--out-poses", o->out_poses,
                   "Write the poses used (refined, perturbed or given), one 3x4 row-major line "
-                  "per frame as in poses/NN.txt (velodyne poses with --world velodyne)");
+                  "per frame as in poses/NN.txt (velodyne poses with --world velodyne)")
+      ->check(kOutputFile);
   sub->add_option("--perturb", o->perturb,
                   "t,r: move each pose after frame 0 by t metres and turn it by r degrees, "
                   "random directions (seeded)")
@@ -378,10 +406,12 @@ void addKittiCommand(CLI::App& app) {
                   "Beams longer than this are cut there and mark no hit (m)")
       ->check(kFinitePositive)
       ->capture_default_str();
-  sub->add_option("--out-octomap", o->out_octomap, "Write the 3D map: .bt or .ot (OctoMap)");
+  sub->add_option("--out-octomap", o->out_octomap, "Write the 3D map: .bt or .ot (OctoMap)")
+      ->check(kOutputFile);
   sub->add_option("--out-trinary", o->out_trinary,
                   "Trinary map_server map (M.pgm + M.yaml) of the 3D map's --band (z, velodyne "
-                  "world): occupied 0, free 254, unknown 205");
+                  "world): occupied 0, free 254, unknown 205")
+      ->check(kOutputFile);
   sub->add_option("--band", o->band, "zmin,zmax of --out-trinary (m)")
       ->check(CLI::Validator(
           [](std::string& s) {

@@ -88,6 +88,7 @@ nlohmann::json segmentJson(const LineSegment& s) {
 }
 
 void runLines(const LinesOptions& o) {
+  requireDistinctOutputs({{"--png", o.png}, {"--svg", o.svg}, {"--steps", o.steps}});
   const ScanLog log = readLog(o);
   const std::size_t n_scans = log.scans.size();
   if (!o.all && static_cast<std::size_t>(o.scan) >= n_scans) {

@@ -17,10 +17,13 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "metricmap/common/parse_number.h"
 #include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
+#include "metricmap/io/input_file.h"
+#include "metricmap/io/output_set.h"
 #include "metricmap/occupancy/occupancy_export.h"
 #include "metricmap/occupancy/octomap_io.h"
 #include "octomap_quiet.h"
@@ -51,28 +54,31 @@ bool isDirectory(const std::string& path) {
   return access((path + "/sequences").c_str(), F_OK) == 0;
 }
 
-/// "zmin,zmax" -> two finite numbers, zmin <= zmax.
+/// "zmin,zmax" -> two finite numbers, zmin <= zmax (the checked parser: no hex, inf, nan).
 std::pair<double, double> parseBand(const std::string& text) {
-  const std::size_t comma = text.find(',');
   try {
-    if (comma == std::string::npos) throw std::invalid_argument("");
-    std::size_t used = 0;
-    const std::string a = text.substr(0, comma), b = text.substr(comma + 1);
-    const double lo = std::stod(a, &used);
-    if (used != a.size()) throw std::invalid_argument("");
-    const double hi = std::stod(b, &used);
-    if (used != b.size() || !std::isfinite(lo) || !std::isfinite(hi) || lo > hi)
-      throw std::invalid_argument("");
-    return {lo, hi};
-  } catch (const std::exception&) {
-    throw std::invalid_argument("--band must be zmin,zmax (finite, zmin <= zmax), got '" + text +
-                                "'");
+    const std::vector<double> v = parseDoubleList(text, "--band");
+    if (v.size() != 2 || v[0] > v[1]) throw std::invalid_argument("");
+    return {v[0], v[1]};
+  } catch (const std::invalid_argument&) {
+    throw UsageError("--band must be zmin,zmax (finite decimal numbers, zmin <= zmax), got '" +
+                     quoteForMessage(text) + "'");
   }
+}
+
+/// The map_server files of --out-map: M.pgm -> M.pgm, M.yaml (as writeTrinaryMapServer).
+std::string yamlOf(const std::string& pgm) {
+  return pgm.substr(0, pgm.find_last_of('.')) + ".yaml";
+}
+
+std::string baseName(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
 /// A PCD's header must declare its sensor pose: the beams start there.
 void requireViewpoint(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in = openRegularFile(path);  // a FIFO would block here
   std::string line;
   for (int i = 0; i < 32 && std::getline(in, line); ++i) {
     if (line.rfind("VIEWPOINT", 0) == 0) return;
@@ -109,7 +115,12 @@ void castScans(const OccupancyOptions& o, const Ranks& ranks, LogOddsMap& map, T
   };
   if (o.inputs.size() == 1 && isDirectory(o.inputs[0])) {
     if (o.frames.empty()) throw CLI::ValidationError("frames", "a KITTI root needs --frames");
-    const std::vector<std::size_t> frames = parseFrameList(o.frames);
+    std::vector<std::size_t> frames;
+    try {
+      frames = parseFrameList(o.frames);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--frames: ") + e.what());
+    }
     const KittiSequence seq{o.inputs[0], o.sequence};
     const auto [first, last] = ranks.share(frames.size());
     for (std::size_t k = first; k < last; ++k) {
@@ -181,6 +192,20 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
                                "the --band is along z: use --world velodyne for --out-map");
   std::pair<double, double> band{0, 0};
   if (!o.band.empty()) band = parseBand(o.band);
+  requireDistinctOutputs({{"--out", o.out_bt},
+                          {"--out-ot", o.out_ot},
+                          {"--out-cloud", o.out_cloud},
+                          {"--out-map", o.out_map},
+                          {"--out-map (its .yaml)", o.out_map.empty() ? "" : yamlOf(o.out_map)},
+                          {"--map-preview", o.map_preview}});
+  for (const auto& [option, path] :
+       {std::pair<std::string, std::string>{"--out", o.out_bt}, {"--out-ot", o.out_ot}}) {
+    if (!path.empty() && !endsWith(path, ".bt") && !endsWith(path, ".ot"))
+      throw UsageError(option + ": an OctoMap file ends in .bt or .ot, got '" +
+                       quoteForMessage(path) + "'");
+  }
+  if (!o.map_preview.empty() && o.out_map.empty())
+    throw UsageError("--map-preview is a picture of --out-map: give --out-map too");
   Totals tot;
   LogOddsParams params;
   if (!from_file) {
@@ -189,7 +214,11 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
     params.resolution = o.resolution;
     params.max_range = o.max_range;
   }
-  validateLogOddsParams(params);
+  try {
+    validateLogOddsParams(params);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());  // option values: a usage error
+  }
   auto t = std::chrono::steady_clock::now();
   LogOddsMap map = from_file ? readOctomapQuietly(o.inputs[0]) : LogOddsMap(params);
   if (from_file) tot.load_s = secondsSince(t);
@@ -204,11 +233,17 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
   t = std::chrono::steady_clock::now();
   TrinaryMap trinary;
   if (!o.out_map.empty()) trinary = projectBand(map, band.first, band.second);
-  if (!o.out_bt.empty()) writeOctomapQuietly(map, o.out_bt);
-  if (!o.out_ot.empty()) writeOctomapQuietly(map, o.out_ot);
+  OutputSet outputs;  // every output or none
+  if (!o.out_bt.empty()) writeOctomapQuietly(map, outputs.stage(o.out_bt));
+  if (!o.out_ot.empty()) writeOctomapQuietly(map, outputs.stage(o.out_ot));
   if (!o.out_cloud.empty())
-    savePcdAtomic(o.out_cloud, occupiedCenters(map), parsePcdFormat(o.pcd_format));
-  if (!o.out_map.empty()) writeTrinaryMapServer(trinary, o.out_map, o.map_preview);
+    savePcdAtomic(outputs.stage(o.out_cloud), occupiedCenters(map), parsePcdFormat(o.pcd_format));
+  if (!o.out_map.empty()) {
+    const std::string pgm = outputs.stage(o.out_map), yaml = outputs.stage(yamlOf(o.out_map));
+    const std::string preview = o.map_preview.empty() ? "" : outputs.stage(o.map_preview);
+    writeTrinaryMapServer(trinary, pgm, yaml, preview, baseName(o.out_map));
+  }
+  outputs.commit();
   tot.write_s = secondsSince(t);
 
   const LogOddsMemory mem = map.memory();
@@ -260,19 +295,23 @@ void addOccupancyCommand(CLI::App& app) {
                   "A KITTI root (with --frames), PCD files (VIEWPOINT = sensor pose), or one "
                   ".bt/.ot map to export")
       ->required();
-  sub->add_option("--resolution", o->resolution, "Voxel edge (m), > 0");
-  sub->add_option("--max-range", o->max_range, "Beams are cut here and mark no hit (m), > 0");
+  sub->add_option("--resolution", o->resolution, "Voxel edge (m), > 0")->check(kFinitePositive);
+  sub->add_option("--max-range", o->max_range, "Beams are cut here and mark no hit (m), > 0")
+      ->check(kFinitePositive);
   sub->add_option("--sequence", o->sequence, "KITTI sequence")->capture_default_str();
   sub->add_option("--frames", o->frames, "KITTI frames, e.g. 0-5,15");
   sub->add_option("--world", o->world, "KITTI world: velodyne (z up) or camera (y down)")
       ->check(CLI::IsMember({"camera", "velodyne"}))
       ->capture_default_str();
-  sub->add_option("--out", o->out_bt, "Write OctoMap .bt (maximum likelihood)");
-  sub->add_option("--out-ot", o->out_ot, "Write OctoMap .ot (log-odds)");
-  sub->add_option("--out-cloud", o->out_cloud, "Write the occupied voxel centres (.pcd)");
-  sub->add_option("--out-map", o->out_map, "Write a trinary map_server map (.pgm + .yaml)");
+  sub->add_option("--out", o->out_bt, "Write OctoMap .bt (maximum likelihood)")->check(kOutputFile);
+  sub->add_option("--out-ot", o->out_ot, "Write OctoMap .ot (log-odds)")->check(kOutputFile);
+  sub->add_option("--out-cloud", o->out_cloud, "Write the occupied voxel centres (.pcd)")
+      ->check(kOutputFile);
+  sub->add_option("--out-map", o->out_map, "Write a trinary map_server map (.pgm + .yaml)")
+      ->check(kOutputFile);
   sub->add_option("--band", o->band, "Height band of --out-map: zmin,zmax (m)");
-  sub->add_option("--map-preview", o->map_preview, "Also write --out-map as PNG");
+  sub->add_option("--map-preview", o->map_preview, "Also write --out-map as PNG")
+      ->check(kOutputFile);
   addPcdFormatOption(*sub, o->pcd_format);
   sub->add_flag("--distributed", o->distributed,
                 "Run as MPI ranks (mpirun -np N metricmap occupancy ...): each rank casts its "

@@ -25,6 +25,7 @@ struct OctreeOptions {
 };
 
 void runOctree(const OctreeOptions& o) {
+  requireDistinctOutputs({{"--out", o.out}, {"--leaves", o.leaves}});
   const LoadedCloud loaded = loadTimed(o.file);
   const auto& cloud = loaded.cloud;
 
@@ -59,7 +60,7 @@ void runOctree(const OctreeOptions& o) {
   Table t({"file", "max_points", "min_cell_size", "points", "total_nodes", "leaf_nodes",
            "internal_nodes", "occupied_leaves", "empty_leaves", "mean_points_per_occupied_leaf",
            "max_depth"});
-  t.addRow({o.file, std::to_string(o.max_points), fixed(o.min_cell_size, 3),
+  t.addRow({o.file, std::to_string(o.max_points), readable(o.min_cell_size),
             std::to_string(s.points), std::to_string(s.total_nodes), std::to_string(s.leaf_nodes),
             std::to_string(s.internal_nodes), std::to_string(s.occupied_leaves),
             std::to_string(s.empty_leaves), fixed(s.mean_points_per_occupied_leaf, 2),
@@ -79,10 +80,11 @@ void addOctreeCommand(CLI::App& app) {
   sub->add_option("--min-cell-size", o->min_cell_size,
                   "Do not split nodes whose largest edge is <= this (metres)")
       ->required()
-      ->check(kFinitePositive);
+      ->check(kFinitePositiveFloat);
   sub->add_flag("--cubic", o->cubic, "Root = cube of the largest extent (default: bounding box)");
-  sub->add_option("--out", o->out, "Write the occupied-leaf means as a PCD");
-  sub->add_option("--leaves", o->leaves, "Write one CSV row per leaf (empty ones too)");
+  sub->add_option("--out", o->out, "Write the occupied-leaf means as a PCD")->check(kOutputFile);
+  sub->add_option("--leaves", o->leaves, "Write one CSV row per leaf (empty ones too)")
+      ->check(kOutputFile);
   addFormatOption(*sub, o->format, {"table", "csv", "json"});
   addPcdFormatOption(*sub, o->pcd_format);
   sub->callback([o] { runOctree(*o); });

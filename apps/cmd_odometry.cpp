@@ -163,7 +163,8 @@ void addOdometryCommand(CLI::App& app) {
                 "Correct the motion within each sweep (times from the azimuth, constant velocity)");
   sub->add_option("--out-poses", o->out_poses,
                   "Write the poses: camera 0 in the frame of camera 0 of the first frame, one "
-                  "3x4 row-major line per frame, as poses/NN.txt");
+                  "3x4 row-major line per frame, as poses/NN.txt")
+      ->check(kOutputFile);
   sub->add_option("--max-range", o->config.max_range, "Drop returns farther (m); local map radius")
       ->check(kFinitePositive)
       ->capture_default_str();

@@ -3,6 +3,7 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <string>
 
 #include <pcl/console/print.h>
 #include <CLI/CLI.hpp>
@@ -10,6 +11,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "metricmap/common/memory_budget.h"
+#include "metricmap/common/parse_number.h"
 #include "metricmap/version.h"
 
 int main(int argc, char** argv) {
@@ -70,7 +72,13 @@ int main(int argc, char** argv) {
     std::cerr << "metricmap: usage: " << e.what() << " (see --help)\n";
     return 2;
   } catch (const std::bad_alloc&) {
-    std::cerr << "metricmap: error: out of memory\n";
+    // Large allocations are checked against the budget with a message naming their option or
+    // input; one that slipped through still names what was asked: the command line.
+    std::string asked;
+    for (int i = 1; i < argc && asked.size() < 200; ++i)
+      asked += (i > 1 ? " " : "") + metricmap::quoteForMessage(argv[i]);
+    std::cerr << "metricmap: error: out of memory running 'metricmap " << asked
+              << "' (an input or option asks for more memory than there is; see --max-memory)\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "metricmap: error: " << e.what() << "\n";

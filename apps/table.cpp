@@ -1,6 +1,7 @@
 #include "table.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -19,6 +20,14 @@ std::string csvField(const std::string& s) {
 std::string fixed(double value, int decimals) {
   std::ostringstream os;
   os << std::fixed << std::setprecision(decimals) << value;
+  return os.str();
+}
+
+std::string readable(double value) {
+  const std::string three = fixed(value, 3);
+  if (std::abs(std::stod(three) - value) <= 1e-6 * std::abs(value)) return three;
+  std::ostringstream os;
+  os << std::setprecision(6) << value;
   return os.str();
 }
 

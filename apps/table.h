@@ -24,4 +24,8 @@ class Table {
 /// \brief Fixed-point with `decimals` digits.
 std::string fixed(double value, int decimals);
 
+/// \brief fixed(value, 3) when that shows the value to 6 significant digits (0.050), else the
+/// value with 6 significant digits (1e-07, 0.0015): a tiny size never prints as 0.000.
+std::string readable(double value);
+
 }  // namespace metricmap::cli

@@ -182,6 +182,10 @@ TEST(HeightMap, DigitizeEdgesAndBadParameters) {
   bad = p;
   bad.z_bins = {1.0, 0.5};
   EXPECT_THROW(HeightMap{bad}, std::invalid_argument);
+  bad.z_bins = {0.5};  // no middle (obstacle) bin between a floor and a ceiling edge
+  EXPECT_THROW(HeightMap{bad}, std::invalid_argument);
+  bad.z_bins = {};
+  EXPECT_THROW(HeightMap{bad}, std::invalid_argument);
   bad = p;
   bad.resolution = 0.0;
   EXPECT_THROW(HeightMap{bad}, std::invalid_argument);

@@ -352,6 +352,11 @@ TEST(LidarOdometry, EmptyOrNanScanIsAnErrorNamingTheFrame) {
   EXPECT_NE(message({{nan, 0, 0}, {0, nan, 1}}, "").find("frame 1"), std::string::npos);
   EXPECT_NE(message({{nan, nan, nan}}, "000042.bin").find("000042.bin"), std::string::npos);
   EXPECT_NE(message({{0.5, 0, 0}}, "near").find("no point between"), std::string::npos);
+  // a few dozen points constrain no pose: refused naming the frame
+  const Points few(kittiScans()[1].begin(), kittiScans()[1].begin() + 30);
+  const std::string m = message(few, "000001.bin");
+  EXPECT_EQ(m.rfind("000001.bin: ", 0), 0u) << m;
+  EXPECT_NE(m.find("at least 100 needed"), std::string::npos) << m;
   EXPECT_EQ(odo.poses().size(), 1u);  // nothing was added by the bad scans
   const OdometryResult r = odo.registerFrame(kittiScans()[1]);
   EXPECT_GT(r.pose.translation().norm(), 0.6);

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "metricmap/common/memory_budget.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/occupancy/log_odds_map.h"
 #include "occupancy_scans.h"
@@ -145,6 +146,37 @@ TEST(LogOddsMap, BadScansLeaveTheMapUnchanged) {
 
 // Beams kilometres long and diagonal: the scan's box is too large for the dense per-scan bits,
 // so the hashed per-scan blocks are used; the same voxels as the plain walk.
+// The map checks the memory budget as a scan's blocks are collected: a resolution far too fine
+// for the budget is refused naming the budget and the resolution, the map unchanged.
+TEST(LogOddsMap, MemoryBudgetIsCheckedAsTheMapGrows) {
+  const std::uint64_t saved = memoryBudget();
+  LogOddsParams p;
+  p.resolution = 0.002;
+  p.max_range = 50.0;
+  LogOddsMap map(p);
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (int i = 0; i < 36; ++i) {  // ~90 000 blocks of 8^3 voxels: ~300 MB
+    const float a = static_cast<float>(i) * 0.174533f;
+    cloud.push_back({40.0f * std::cos(a), 40.0f * std::sin(a), 1.0f});
+  }
+  setMemoryBudget(std::uint64_t{64} << 20);
+  try {
+    map.insertScan(cloud, Eigen::Vector3f::Zero());
+    ADD_FAILURE() << "a 0.002 m map of 40 m beams fitted in 64 MiB";
+  } catch (const CapacityError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("memory budget of 64 MiB (--max-memory"), std::string::npos) << m;
+    EXPECT_NE(m.find("resolution 0.002 m"), std::string::npos) << m;
+  }
+  setMemoryBudget(saved);
+  EXPECT_EQ(map.knownVoxels(), 0u);
+  p.resolution = 0.2;  // the same scan at a sane resolution fits
+  LogOddsMap coarse(p);
+  setMemoryBudget(std::uint64_t{64} << 20);
+  EXPECT_GT(coarse.insertScan(cloud, Eigen::Vector3f::Zero()).beams, 0u);
+  setMemoryBudget(saved);
+}
+
 TEST(LogOddsMap, LongBeamsThroughTheSparsePath) {
   LogOddsParams p;
   p.resolution = 0.1;  // no max range

@@ -180,6 +180,20 @@ TEST(OctomapIo, CorruptAndTruncatedFilesAreRefused) {
   std::string bad_res = good;
   bad_res.replace(bad_res.find("res 0.08"), 8, "res 0.00");
   cases.emplace_back("res0.bt", bad_res);
+  // every header number through the checked parser, every key once
+  for (const auto& [name, res] :
+       std::vector<std::pair<std::string, std::string>>{{"res_junk.bt", "res 0.08abc"},
+                                                        {"res_tiny.bt", "res 1e-300"},
+                                                        {"res_hex.bt", "res 0x1p-4"},
+                                                        {"res_two.bt", "res 0.08 0.08"},
+                                                        {"res_twice.bt", "res 0.08\nres 0.16"}}) {
+    std::string text = good;
+    text.replace(text.find("res 0.08"), 8, res);
+    cases.emplace_back(name, text);
+  }
+  std::string size_junk = good;
+  size_junk.replace(size_junk.find("size 532566"), 11, "size 532566x");
+  cases.emplace_back("size_junk.bt", size_junk);
   std::string bad_size = good;
   bad_size.replace(bad_size.find("size 532566"), 11, "size 532567");
   cases.emplace_back("size.bt", bad_size);

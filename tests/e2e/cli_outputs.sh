@@ -65,7 +65,7 @@ check "counts.npy is a NumPy file with the map's shape" bash -c \
 check "the npy holds 200*200*3 uint32 after its 128-byte header" \
   test "$(stat -c %s "$tmp/tum_counts.npy")" = $((128 + 200 * 200 * 3 * 4))
 check "heightmap accounts for every valid pixel" bash -c "python3 -c 1 2>/dev/null; \
-  awk '/bin_counts/{f=1;next} f&&/]/{f=0} f{gsub(/,/,\"\");s+=\$1} /points_outside_map/{gsub(/,/,\"\");o=\$2} /valid_pixels/{gsub(/,/,\"\");v=\$2} END{exit !(s+o==v && v>0)}' '$tmp/tum.json'"
+  awk '/bin_counts/{f=1;next} f&&/]/{f=0} f{gsub(/,/,\"\");s+=\$1} /points_outside_map/{gsub(/,/,\"\");o=\$2} /\"points\"/{gsub(/,/,\"\");v=\$2} END{exit !(s+o==v && v>0)}' '$tmp/tum.json'"
 check "explicit pose works" "$MM" heightmap "$tum/TUM_depth.png" --camera "$tum/camera_primesense.json" \
   --camera-height 1.2 --pitch-deg 20 --resolution 0.05 --map-size 200 --z-bins 0.1,1.0 \
   --out-prefix "$tmp/tum2" --format table

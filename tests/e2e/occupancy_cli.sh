@@ -38,13 +38,13 @@ expect 2 "need the 3D occupancy map" -- "$MM" kitti "$kitti" --frames 0 --out-oc
 expect 2 "go together" -- "$MM" kitti "$kitti" --frames 0 --world velodyne \
   --occupancy-resolution 0.2 --out-trinary "$out/bad.pgm"
 
-# bad input: exit 1, one line, nothing written
+# bad option values: usage errors (exit 2); bad input: exit 1; one line, nothing written
 for r in 0 -0.2 nan; do
-  expect 1 "resolution must be" -- "$MM" occupancy "$kitti" --frames 0 --resolution "$r" \
+  expect 2 "--resolution" -- "$MM" occupancy "$kitti" --frames 0 --resolution "$r" \
     --max-range 50 --out "$out/bad.bt"
 done
 for m in 0 -1 nan; do
-  expect 1 "max_range must be" -- "$MM" occupancy "$kitti" --frames 0 --resolution 0.2 \
+  expect 2 "--max-range" -- "$MM" occupancy "$kitti" --frames 0 --resolution 0.2 \
     --max-range "$m" --out "$out/bad.bt"
 done
 head -c 60000 "$out/m.bt" >"$out/trunc.bt"
@@ -60,7 +60,7 @@ expect 1 "000000.bin: scans must be PCD" -- "$MM" occupancy "$kitti/sequences/00
   --resolution 0.2 --max-range 10 --out "$out/bad.bt"
 expect 1 "height band" -- "$MM" occupancy "$kitti" --frames 0 --resolution 0.2 --max-range 50 \
   --out "$out/bad.bt" --out-map "$out/bad.pgm" --band 100,200
-expect 1 "--band must be" -- "$MM" occupancy "$kitti" --frames 0 --resolution 0.2 --max-range 50 \
+expect 2 "--band must be" -- "$MM" occupancy "$kitti" --frames 0 --resolution 0.2 --max-range 50 \
   --out-map "$out/bad.pgm" --band 1
 expect 2 "--resolution and --max-range" -- "$MM" occupancy "$kitti" --frames 0 --resolution 0.2
 check "no partial or stray file" test -z "$(ls "$out" | grep -E 'bad|tmp-')"

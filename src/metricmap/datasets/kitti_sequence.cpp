@@ -3,57 +3,69 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include "metricmap/common/parse_number.h"
+#include "metricmap/common/rigid_transform.h"
 #include "metricmap/exceptions.h"
+#include "metricmap/io/input_file.h"
 
 namespace metricmap {
 namespace {
 
-bool parse12(std::istream& is, Eigen::Isometry3d& t) {
-  double v[12];
-  for (double& x : v) {
-    if (!(is >> x) || !std::isfinite(x)) return false;
-  }
-  std::string extra;
-  if (is >> extra) return false;
+/// 12 numbers (row-major 3x4) through the checked parser, then the rigid-transform check.
+/// \throws InputError "WHERE is not 12 finite numbers" or "WHERE: the 3x3 part is not a ..."
+Eigen::Isometry3d parse12(std::istream& is, const std::string& where) {
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-  for (int i = 0; i < 12; ++i) m(i / 4, i % 4) = v[i];
+  std::string token;
+  try {
+    for (int i = 0; i < 12; ++i) {
+      if (!(is >> token)) throw std::invalid_argument("");
+      m(i / 4, i % 4) = parseFiniteDouble(token, where);
+    }
+  } catch (const std::invalid_argument&) {
+    throw InputError(where + " is not 12 finite numbers");
+  }
+  if (is >> token) throw InputError(where + " is not 12 finite numbers");
+  try {
+    checkRigidTransform(m, where);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
+  }
+  Eigen::Isometry3d t;
   t.matrix() = m;
-  return true;
+  return t;
 }
 
 }  // namespace
 
 Eigen::Isometry3d readKittiCalibTr(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open");
+  std::ifstream in = openRegularFile(path, std::ios::in);
   std::string line;
-  while (std::getline(in, line)) {
+  std::optional<Eigen::Isometry3d> tr;
+  for (std::size_t n = 1; std::getline(in, line); ++n) {
     std::istringstream is(line);
     std::string key;
     is >> key;
     if (key != "Tr:") continue;
-    Eigen::Isometry3d tr;
-    if (!parse12(is, tr)) throw InputError(path + ": Tr is not 12 finite numbers");
-    return tr;
+    // two Tr lines: which one is meant is unknown, so neither is used
+    if (tr) throw InputError(path + ": a second 'Tr:' line (line " + std::to_string(n) + ")");
+    tr = parse12(is, path + ": Tr (line " + std::to_string(n) + ")");
   }
-  throw InputError(path + ": no 'Tr:' line (velodyne -> camera 0)");
+  if (in.bad()) throw InputError(path + ": read error");
+  if (!tr) throw InputError(path + ": no 'Tr:' line (velodyne -> camera 0)");
+  return *tr;
 }
 
 std::vector<Eigen::Isometry3d> readKittiPoses(const std::string& path, std::size_t frames) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open");
+  std::ifstream in = openRegularFile(path, std::ios::in);
   std::vector<Eigen::Isometry3d> poses;
   std::string line;
   for (std::size_t n = 1; poses.size() < frames && std::getline(in, line); ++n) {
     std::istringstream is(line);
-    Eigen::Isometry3d t;
-    if (!parse12(is, t)) {
-      throw InputError(path + ": line " + std::to_string(n) + " is not 12 finite numbers");
-    }
-    poses.push_back(t);
+    poses.push_back(parse12(is, path + ": line " + std::to_string(n)));
   }
   if (poses.size() < frames) {
     throw InputError(path + ": " + std::to_string(poses.size()) + " pose(s), frames up to " +
@@ -72,6 +84,8 @@ std::vector<std::size_t> parseFrameList(const std::string& text, std::size_t max
     }
     return static_cast<std::size_t>(std::stoul(s));
   };
+  if (!text.empty() && text.back() == ',')  // getline drops a trailing empty item
+    throw std::invalid_argument("frame list '" + text + "' ends in an empty item");
   for (std::string item; std::getline(is, item, ',');) {
     const auto dash = item.find('-');
     const std::size_t a = number(item.substr(0, dash));

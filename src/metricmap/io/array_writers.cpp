@@ -1,17 +1,22 @@
 #include "metricmap/io/array_writers.h"
 
+#include <atomic>
+#include <cctype>
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
 #include <type_traits>
 
 #include <unistd.h>
+#include <vtkErrorCode.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkObject.h>
 #include <vtkPNGWriter.h>
 #include <vtkPNMWriter.h>
 
+#include "metricmap/io/checked_file.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/output_set.h"
 
@@ -19,15 +24,40 @@ namespace metricmap {
 
 namespace {
 
-/// VTK's writers do not report a short write everywhere: the file must exist and end with
-/// a complete image (PNG: the IEND chunk; PNM: non-empty).
-bool wholeFileWritten(const std::string& tmp, bool png) {
+/// Bytes of a PNM header ("P5", whitespace or comments, width, height, maxval, one whitespace)
+/// at the start of `f`, or -1.
+long pnmHeaderBytes(std::FILE* f) {
+  char head[512] = {0};
+  const std::size_t n = std::fread(head, 1, sizeof head, f);
+  if (n < 2 || head[0] != 'P') return -1;
+  std::size_t i = 2;
+  for (int field = 0; field < 3; ++field) {
+    while (i < n && (std::isspace(static_cast<unsigned char>(head[i])) || head[i] == '#')) {
+      if (head[i] == '#') {
+        while (i < n && head[i] != '\n') ++i;
+      } else {
+        ++i;
+      }
+    }
+    if (i >= n || !std::isdigit(static_cast<unsigned char>(head[i]))) return -1;
+    while (i < n && std::isdigit(static_cast<unsigned char>(head[i]))) ++i;
+  }
+  return i < n ? static_cast<long>(i + 1) : -1;
+}
+
+/// VTK's writers do not report a short write everywhere (a full disk): the file must hold the
+/// whole image (PNG: ends with the IEND chunk; PNM: exactly its header and every pixel byte).
+bool wholeFileWritten(const std::string& tmp, bool png, std::size_t pixel_bytes) {
   std::FILE* f = std::fopen(tmp.c_str(), "rb");
   if (f == nullptr) return false;
   bool ok = std::fseek(f, 0, SEEK_END) == 0 && std::ftell(f) > 0;
   if (ok && !png) {
+    const long size = std::ftell(f);
+    std::rewind(f);
+    const long header = pnmHeaderBytes(f);
     std::fclose(f);
-    return true;
+    return header > 0 &&
+           static_cast<std::size_t>(size) == static_cast<std::size_t>(header) + pixel_bytes;
   }
   char tail[8] = {0};
   ok = ok && std::fseek(f, -8, SEEK_END) == 0 && std::fread(tail, 1, 8, f) == 8 &&
@@ -53,16 +83,26 @@ void writeImage(const std::string& path, int width, int height, int channels,
                 pixels.data() + static_cast<std::size_t>(v) * row_bytes, row_bytes);
   }
   checkOutputPath(path);
-  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
+  static std::atomic<unsigned> counter{0};
+  const std::string tmp =
+      path + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
   vtkNew<Writer> writer;
   writer->SetFileName(tmp.c_str());
   writer->SetInputData(image);
   writer->Write();
-  if (writer->GetErrorCode() != 0 ||
-      !wholeFileWritten(tmp, std::is_same<Writer, vtkPNGWriter>::value) ||
-      std::rename(tmp.c_str(), path.c_str()) != 0) {
+  const unsigned long vtk_error = writer->GetErrorCode();
+  const bool whole =
+      vtk_error == 0 &&
+      wholeFileWritten(tmp, std::is_same<Writer, vtkPNGWriter>::value, pixels.size());
+  if (!whole || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
     std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": cannot write image");
+    const std::string why =
+        vtk_error == vtkErrorCode::OutOfDiskSpaceError || (!whole && vtk_error == 0)
+            ? "incomplete image: no space left on device?"
+        : whole ? std::strerror(err)
+                : vtkErrorCode::GetStringFromErrorCode(vtk_error);
+    throw std::runtime_error(outputDisplayName(path) + ": cannot write image (" + why + ")");
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/exceptions.h"
+#include "metricmap/io/input_file.h"
 
 namespace metricmap {
 
@@ -13,6 +14,7 @@ void readKittiBin(const std::string& path, pcl::PCLPointCloud2& blob) {
   std::error_code ec;
   if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
     throw InputError(path + ": not a regular file (a directory or a special file)");
+  requireRegularFile(path);  // a FIFO would block the open
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open");
   in.seekg(0, std::ios::end);

@@ -12,6 +12,7 @@
 
 #include "metricmap/common/parse_number.h"
 #include "metricmap/exceptions.h"
+#include "metricmap/io/input_file.h"
 
 namespace metricmap {
 namespace {
@@ -196,6 +197,7 @@ void checkBinary(const std::string& path, std::istream& in, const PcdHeader& h,
 }  // namespace
 
 PcdHeader checkPcdFile(const std::string& path, std::uint64_t& skipped_lines) {
+  requireRegularFile(path);  // a FIFO would block the open
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
   in.seekg(0, std::ios::end);

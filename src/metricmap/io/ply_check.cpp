@@ -6,10 +6,12 @@
 
 #include "metricmap/common/parse_number.h"
 #include "metricmap/exceptions.h"
+#include "metricmap/io/input_file.h"
 
 namespace metricmap {
 
 void checkPlyFile(const std::string& path) {
+  requireRegularFile(path);  // a FIFO would block the open
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open");
   in.seekg(0, std::ios::end);

@@ -15,7 +15,10 @@ HeightMap::HeightMap(const HeightMapParams& params) : params_(params) {
     throw std::invalid_argument("resolution must be a finite number > 0");
   }
   if (params.map_size == 0) throw std::invalid_argument("map size must be > 0");
-  if (params.z_bins.empty()) throw std::invalid_argument("z bins need at least one edge");
+  // bins below, between and above: the middle (obstacle) bin needs a floor and a ceiling edge
+  if (params.z_bins.size() < 2)
+    throw std::invalid_argument("z bins need at least two edges (floor, ceiling), got " +
+                                std::to_string(params.z_bins.size()));
   for (std::size_t i = 0; i < params.z_bins.size(); ++i) {
     if (!std::isfinite(params.z_bins[i]) || (i > 0 && !(params.z_bins[i] > params.z_bins[i - 1]))) {
       throw std::invalid_argument("z bins must be finite and strictly increasing");

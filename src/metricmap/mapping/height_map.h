@@ -7,7 +7,7 @@
 /// x in [(col - N/2) res, (col - N/2 + 1) res) and y in [(N/2 - 1 - row) res, (N/2 - row) res),
 /// so row 0 is the far (forward) edge and images read like a map seen from above.
 /// Height bins follow np.digitize(z, z_bins): bin 0 below z_bins[0], bin i for
-/// z_bins[i-1] <= z < z_bins[i], bin len(z_bins) at or above the last edge.
+/// z_bins[i-1] <= z < z_bins[i], bin len(z_bins) at or above the last edge; at least two edges.
 
 #include <cstddef>
 #include <cstdint>

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "metricmap/common/memory_budget.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/occupancy/ray_kernel.h"
 
@@ -81,6 +82,13 @@ ScanInsertReport LogOddsMap::insertRaw(const float* xyz, std::size_t stride_byte
   for (int i = 0; i < 3; ++i) in.origin[i] = sensor_origin[i];
   in.resolution = params_.resolution;
   in.max_range = params_.max_range;
+  // Memory budget: each block a scan touches costs its work space (grown by doubling) and, if
+  // new, a map block (the block vector also grows by doubling) and hash slots.
+  const std::uint64_t budget = memoryBudget();
+  const std::uint64_t used = memory().reserved_bytes + scratch_.dense.capacity() * 8;
+  const std::uint64_t per_block =
+      2 * sizeof(detail::ScanBlock) + 2 * sizeof(detail::VoxelBlock) + 64;
+  in.max_blocks = budget > used ? static_cast<std::size_t>((budget - used) / per_block) : 0;
   const detail::RayCastCounts counts = detail::castRays(in, scratch_);
   ScanInsertReport report;
   report.points = count;

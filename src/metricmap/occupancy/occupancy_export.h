@@ -39,6 +39,12 @@ TrinaryMap projectBand(const LogOddsMap& map, double z_min, double z_max);
 void writeTrinaryMapServer(const TrinaryMap& map, const std::string& pgm_path,
                            const std::string& preview_png = "");
 
+/// \brief The same with every path given (e.g. OutputSet temporaries): the PGM, the YAML, the
+/// preview (or ""), and the image name the YAML records.
+void writeTrinaryMapServer(const TrinaryMap& map, const std::string& pgm_path,
+                           const std::string& yaml_path, const std::string& preview_png,
+                           const std::string& image_name);
+
 /// \brief The centres of the occupied voxels (`occupied` true) or of the free ones.
 std::vector<Eigen::Vector3d> voxelCenters(const LogOddsMap& map, bool occupied);
 

@@ -6,12 +6,16 @@
 #include <sstream>
 #include <vector>
 
+#include "metricmap/common/parse_number.h"
 #include "metricmap/exceptions.h"
 
 namespace metricmap {
 namespace {
 
 constexpr int kMaxDepth = 16;  // OctoMap's tree depth: leaves at depth 16
+constexpr long long kMaxNodes = 1LL << 50;
+// a voxel edge: 0.1 mm (below that the 16-level key space is under 7 m wide) to 1 km
+constexpr double kMinResolution = 1e-4, kMaxResolution = 1e3;
 
 [[noreturn]] void fail(const std::string& name, const std::string& what) {
   throw InputError(name + ": " + what);
@@ -108,31 +112,39 @@ OctomapFileInfo checkOctomapBytes(const std::string& bytes, const std::string& n
          "not an OctoMap file (first line is not '# Octomap OcTree file' or '# Octomap "
          "OcTree binary file')");
   }
-  bool have_size = false, have_res = false, have_data = false;
+  bool have_size = false, have_res = false, have_data = false, have_id = false;
   while (nextLine(bytes, pos, line)) {
     if (line.empty() || line[0] == '#') continue;
     std::istringstream in(line);
-    std::string token;
+    std::string token, value, extra;
     in >> token;
     if (token == "data") {
       have_data = true;
       break;
     }
-    if (token == "id") {
-      in >> info.id;
-    } else if (token == "size") {
-      long long n = -1;
-      if (!(in >> n) || n < 0) fail(name, "bad size line '" + line + "'");
-      info.size = static_cast<std::size_t>(n);
-      have_size = true;
-    } else if (token == "res") {
-      double r = 0;
-      if (!(in >> r) || !std::isfinite(r) || r <= 0)
-        fail(name, "bad resolution line '" + line + "'");
-      info.resolution = r;
-      have_res = true;
-    } else {
-      fail(name, "unknown header line '" + line + "'");
+    // "KEY VALUE", each key once: a second 'res' line would silently win otherwise
+    if (!(in >> value) || (in >> extra))
+      fail(name, "header line '" + quoteForMessage(line) + "' is not 'KEY VALUE'");
+    bool* seen = token == "id" ? &have_id : token == "size" ? &have_size : &have_res;
+    if (token != "id" && token != "size" && token != "res")
+      fail(name, "unknown header line '" + quoteForMessage(line) + "'");
+    if (*seen) fail(name, "header has two '" + token + "' lines");
+    *seen = true;
+    try {
+      if (token == "id") {
+        info.id = value;
+      } else if (token == "size") {
+        info.size = static_cast<std::size_t>(parseInteger(value, "size", 0, kMaxNodes));
+      } else {
+        info.resolution = parseFiniteDouble(value, "res");
+        if (!(info.resolution >= kMinResolution && info.resolution <= kMaxResolution))
+          throw std::invalid_argument("");
+      }
+    } catch (const std::invalid_argument&) {
+      fail(name, "bad " + token + " line '" + quoteForMessage(line) + "' (" +
+                     (token == "size" ? std::string("a node count")
+                                      : "a voxel edge from 0.0001 to 1000 m") +
+                     ")");
     }
   }
   if (!have_data) fail(name, "truncated header (no 'data' line)");

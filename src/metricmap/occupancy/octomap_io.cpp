@@ -1,16 +1,21 @@
 #include "metricmap/occupancy/octomap_io.h"
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include <octomap/AbstractOcTree.h>
 #include <octomap/OcTree.h>
 
+#include "metricmap/common/memory_budget.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_writer.h"
+#include "metricmap/io/input_file.h"
 #include "metricmap/occupancy/octomap_file_check.h"
 
 namespace metricmap {
@@ -59,14 +64,6 @@ std::unique_ptr<octomap::OcTree> toOcTree(const LogOddsMap& map) {
   return tree;
 }
 
-std::string readAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open");
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw InputError(path + ": read error");
-  return bytes;
-}
-
 }  // namespace
 
 void writeOctomap(const LogOddsMap& map, const std::string& path) {
@@ -82,7 +79,8 @@ void writeOctomap(const LogOddsMap& map, const std::string& path) {
 
 LogOddsMap readOctomap(const std::string& path, const LogOddsParams& params,
                        std::size_t max_voxels) {
-  const std::string bytes = readAll(path);
+  // a regular file only (a FIFO blocks, /dev/zero never ends), read up to its size, in budget
+  const std::string bytes = readRegularFile(path, std::numeric_limits<std::uint64_t>::max());
   const OctomapFileInfo info = checkOctomapBytes(bytes, path);
   LogOddsParams p = params;
   p.resolution = info.resolution;
@@ -103,17 +101,36 @@ LogOddsMap readOctomap(const std::string& path, const LogOddsParams& params,
     tree.reset(oc);
   }
   // expansion budget first: a leaf at depth d covers 8^(16 - d) voxels
-  std::size_t total = 0;
+  // blocks: a leaf of 8^3 voxels or more tiles its own; smaller leaves share theirs (counted
+  // once through their sorted block keys)
+  std::size_t total = 0, blocks = 0;
+  std::vector<std::uint64_t> small_leaf_blocks;
   const unsigned max_depth = tree->getTreeDepth();
   for (auto it = tree->begin_leafs(), end = tree->end_leafs(); it != end; ++it) {
     const unsigned levels = max_depth - it.getDepth();
     if (levels >= 10) throw CapacityError(path + ": a leaf covers more than 2^30 voxels");
     total += std::size_t{1} << (3 * levels);
+    if (levels >= 3) {
+      blocks += std::size_t{1} << (3 * (levels - 3));
+    } else {
+      const octomap::OcTreeKey key = it.getIndexKey();
+      small_leaf_blocks.push_back((std::uint64_t{key[0]} >> 3) << 26 |
+                                  (std::uint64_t{key[1]} >> 3) << 13 |
+                                  (std::uint64_t{key[2]} >> 3));
+    }
     if (total > max_voxels) {
       throw CapacityError(path + ": expanding the pruned leaves gives more than " +
                           std::to_string(max_voxels) + " voxels");
     }
   }
+  std::sort(small_leaf_blocks.begin(), small_leaf_blocks.end());
+  blocks += static_cast<std::size_t>(
+      std::unique(small_leaf_blocks.begin(), small_leaf_blocks.end()) - small_leaf_blocks.begin());
+  small_leaf_blocks = std::vector<std::uint64_t>();
+  // the map's blocks (and their hash slots) against the memory budget, before the expansion
+  checkMemory(
+      blocks, 2 * sizeof(detail::VoxelBlock) + 16,
+      path + " (" + std::to_string(total) + " voxels in " + std::to_string(blocks) + " blocks)");
   for (auto it = tree->begin_leafs(), end = tree->end_leafs(); it != end; ++it) {
     const octomap::OcTreeKey base = it.getIndexKey();
     const std::int64_t edge = std::int64_t{1} << (max_depth - it.getDepth());

@@ -8,6 +8,7 @@
 
 #include <emmintrin.h>
 
+#include "metricmap/common/memory_budget.h"
 #include "metricmap/detail/fast_floor.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/occupancy/voxel_key.h"
@@ -43,7 +44,8 @@ namespace {
 /// Marks voxels into the scan's blocks; remembers the last block touched.
 class Marker {
  public:
-  explicit Marker(ScanUpdate& out) : out_(out) {}
+  Marker(ScanUpdate& out, std::size_t max_blocks, double resolution)
+      : out_(out), max_blocks_(max_blocks), resolution_(resolution) {}
 
   std::uint64_t* freeWords(std::int64_t bx, std::int64_t by, std::int64_t bz) {
     return blockAt(bx, by, bz).free;
@@ -70,6 +72,7 @@ class Marker {
     const auto next = static_cast<std::uint32_t>(out_.blocks.size());
     const std::uint32_t index = out_.index.findOrInsert(key, next, inserted);
     if (inserted) {
+      if (out_.blocks.size() >= max_blocks_) tooManyBlocks();
       out_.blocks.emplace_back();
       ScanBlock& b = out_.blocks.back();
       std::memset(b.free, 0, sizeof(b.free));
@@ -82,7 +85,18 @@ class Marker {
     bz_ = bz;
   }
 
+  [[noreturn]] void tooManyBlocks() const {
+    std::ostringstream msg;
+    msg << "the scan's beams cross more than " << max_blocks_ << " blocks of 8^3 voxels at "
+        << "resolution " << resolution_ << " m: the map would need more than the memory budget "
+        << "of " << (memoryBudget() >> 20) << " MiB (--max-memory; a coarser --resolution or a "
+        << "shorter --max-range needs less)";
+    throw CapacityError(msg.str());
+  }
+
   ScanUpdate& out_;
+  std::size_t max_blocks_;
+  double resolution_;
   ScanBlock* block_ = nullptr;
   std::int64_t bx_ = std::numeric_limits<std::int64_t>::min(), by_ = 0, bz_ = 0;
 };
@@ -386,7 +400,7 @@ RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
   const std::int64_t x0 = (lo[0] >> 6) * 64;  // a multiple of 64 (and of 8)
   const std::int64_t words_per_row = ((hi[0] - x0) >> 6) + 1;
   const std::int64_t ny = hi[1] - lo[1] + 1, nz = hi[2] - lo[2] + 1;
-  Marker marker(out);
+  Marker marker(out, in.max_blocks, in.resolution);
   if (words_per_row * ny * nz <= kDenseWordLimit) {
     const auto words = static_cast<std::size_t>(words_per_row * ny * nz);
     if (out.dense.size() < 2 * words) out.dense.assign(2 * words, 0);

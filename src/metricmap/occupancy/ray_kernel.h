@@ -19,6 +19,9 @@ struct RayCastInput {
   float origin[3] = {0, 0, 0};
   double resolution = 0.1;
   double max_range = 0.0;  ///< infinity: no cut
+  /// Most distinct blocks the scan may touch (the memory budget's share): one more throws
+  /// CapacityError naming the resolution and the budget.
+  std::size_t max_blocks = static_cast<std::size_t>(-1);
 };
 
 /// \brief Beams cast and skipped.

@@ -35,6 +35,9 @@ const LidarOdometryConfig& validated(const LidarOdometryConfig& c) {
                                   std::to_string(v));
     }
   }
+  if (c.min_points < 1) {
+    throw std::invalid_argument("min_points must be >= 1, got " + std::to_string(c.min_points));
+  }
   if (c.max_iterations < 1) {
     throw std::invalid_argument("max_iterations must be >= 1, got " +
                                 std::to_string(c.max_iterations));
@@ -114,6 +117,12 @@ OdometryResult LidarOdometry::registerFrame(const std::vector<Eigen::Vector3d>& 
   if (kept.empty()) {
     throw InputError(label + ": no point between min_range " + std::to_string(config_.min_range) +
                      " and max_range " + std::to_string(config_.max_range) + " m");
+  }
+  if (kept.size() < static_cast<std::size_t>(config_.min_points)) {
+    throw InputError(label + ": " + std::to_string(kept.size()) + " point(s) between min_range " +
+                     std::to_string(config_.min_range) + " and max_range " +
+                     std::to_string(config_.max_range) + " m, at least " +
+                     std::to_string(config_.min_points) + " needed to register a frame");
   }
   res.points_used = kept.size();
 

@@ -44,6 +44,10 @@ struct LidarOdometryConfig {
   /// \brief Correct the motion within a sweep using per-point times and the constant-velocity
   /// model (needs the times).
   bool deskew = false;
+  /// \brief Fewest points a frame must have within [min_range, max_range]: a sweep of a
+  /// few dozen points (a truncated or filtered file) constrains no pose, so it is refused
+  /// naming the frame rather than registered to noise. A real sweep has ~100k.
+  int min_points = 100;
 };
 
 }  // namespace metricmap
