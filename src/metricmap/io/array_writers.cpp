@@ -16,6 +16,7 @@
 #include <vtkPNGWriter.h>
 #include <vtkPNMWriter.h>
 
+#include "metricmap/io/atomic_file.h"
 #include "metricmap/io/checked_file.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/output_set.h"
@@ -83,9 +84,7 @@ void writeImage(const std::string& path, int width, int height, int channels,
                 pixels.data() + static_cast<std::size_t>(v) * row_bytes, row_bytes);
   }
   checkOutputPath(path);
-  static std::atomic<unsigned> counter{0};
-  const std::string tmp =
-      path + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  const std::string tmp = temporaryPathFor(path);
   vtkNew<Writer> writer;
   writer->SetFileName(tmp.c_str());
   writer->SetInputData(image);
@@ -94,16 +93,14 @@ void writeImage(const std::string& path, int width, int height, int channels,
   const bool whole =
       vtk_error == 0 &&
       wholeFileWritten(tmp, std::is_same<Writer, vtkPNGWriter>::value, pixels.size());
-  if (!whole || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    std::remove(tmp.c_str());
-    const std::string why =
-        vtk_error == vtkErrorCode::OutOfDiskSpaceError || (!whole && vtk_error == 0)
-            ? "incomplete image: no space left on device?"
-        : whole ? std::strerror(err)
-                : vtkErrorCode::GetStringFromErrorCode(vtk_error);
+  if (!whole) {
+    discardTemporary(tmp);
+    const std::string why = vtk_error == vtkErrorCode::OutOfDiskSpaceError || vtk_error == 0
+                                ? "incomplete image: no space left on device?"
+                                : vtkErrorCode::GetStringFromErrorCode(vtk_error);
     throw std::runtime_error(outputDisplayName(path) + ": cannot write image (" + why + ")");
   }
+  commitTemporary(tmp, path);
 }
 
 }  // namespace

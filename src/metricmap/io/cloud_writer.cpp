@@ -16,31 +16,12 @@
 #include <pcl/exceptions.h>
 #include <pcl/io/pcd_io.h>
 
+#include "metricmap/io/atomic_file.h"
 #include "metricmap/io/checked_file.h"
 #include "metricmap/io/output_set.h"
 
 namespace metricmap {
 namespace {
-
-std::string temporaryName(const std::string& path) {
-  static std::atomic<unsigned> counter{0};
-  return path + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-}
-
-void commit(const std::string& tmp, const std::string& path) {
-  try {
-    checkOutputPath(path);
-  } catch (...) {
-    std::remove(tmp.c_str());
-    throw;
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    std::remove(tmp.c_str());
-    throw std::runtime_error(outputDisplayName(path) + ": cannot write (" + std::strerror(err) +
-                             ")");
-  }
-}
 
 /// PCL's binary writers return -1 or throw without a reason: find one for the message.
 std::string whyPclFailed(const std::string& path, std::uint64_t bytes) {
@@ -112,7 +93,7 @@ template <typename PointT>
 void savePcdAtomic(const std::string& path, const pcl::PointCloud<PointT>& cloud,
                    PcdFormat format) {
   checkOutputPath(path);
-  const std::string tmp = temporaryName(path);
+  const std::string tmp = temporaryPathFor(path);
   if (format == PcdFormat::Ascii) {
     try {
       writePcdAscii(tmp, cloud);
@@ -120,7 +101,7 @@ void savePcdAtomic(const std::string& path, const pcl::PointCloud<PointT>& cloud
       std::remove(tmp.c_str());
       throw;
     }
-    commit(tmp, path);
+    commitTemporary(tmp, path);
     return;
   }
   // PCL's binary writers reserve the whole file first (fallocate) and report that failure.
@@ -137,12 +118,12 @@ void savePcdAtomic(const std::string& path, const pcl::PointCloud<PointT>& cloud
     throw std::runtime_error(outputDisplayName(path) + ": cannot write PCD (" +
                              whyPclFailed(path, cloud.size() * sizeof(PointT)) + ")");
   }
-  commit(tmp, path);
+  commitTemporary(tmp, path);
 }
 
 void writeTextAtomic(const std::string& path, const std::string& text) {
   checkOutputPath(path);
-  const std::string tmp = temporaryName(path);
+  const std::string tmp = temporaryPathFor(path);
   try {
     CheckedFile out(tmp);
     out.write(text);
@@ -151,7 +132,7 @@ void writeTextAtomic(const std::string& path, const std::string& text) {
     std::remove(tmp.c_str());
     throw;
   }
-  commit(tmp, path);
+  commitTemporary(tmp, path);
 }
 
 template void savePcdAtomic(const std::string&, const pcl::PointCloud<pcl::PointXYZ>&, PcdFormat);

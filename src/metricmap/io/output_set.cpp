@@ -10,24 +10,12 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "metricmap/io/atomic_file.h"
+
 namespace metricmap {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// "dir/name.ext" -> "dir/name.tmp-PID-N.ext": same directory (rename stays atomic), same
-/// extension (writers choose the format from it).
-std::string temporaryFor(const std::string& path) {
-  static std::atomic<unsigned> counter{0};
-  const std::string tag = ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-  const std::size_t slash = path.find_last_of('/');
-  const std::size_t dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash) ||
-      dot == (slash == std::string::npos ? 0 : slash + 1)) {
-    return path + tag;
-  }
-  return path.substr(0, dot) + tag + path.substr(dot);
-}
 
 void checkParent(const std::string& path) {
   const fs::path parent = fs::path(path).parent_path();
@@ -63,7 +51,7 @@ std::string OutputSet::stage(const std::string& path) {
   for (const Staged& s : staged_) {
     if (s.destination == path) throw std::runtime_error(path + ": named for two outputs");
   }
-  staged_.push_back({temporaryFor(path), path, false});
+  staged_.push_back({temporaryPathFor(path), path, false});
   return staged_.back().temporary;
 }
 

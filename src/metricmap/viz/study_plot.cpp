@@ -1,5 +1,7 @@
 #include "metricmap/viz/study_plot.h"
 
+#include "metricmap/io/atomic_file.h"
+#include "metricmap/io/output_set.h"
 #include "metricmap/viz/vtk_png.h"
 
 #include <cstdio>
@@ -92,15 +94,17 @@ void writeStudyPlot(const std::string& path, const std::vector<std::string>& cat
     writeVtkPng(grab->GetOutputPort(), path);
     return;
   }
-  const std::string tmp = path + ".tmp-" + std::to_string(::getpid()) + ".svg";
+  checkOutputPath(path);
+  const std::string tmp = temporaryPathFor(path);
   vtkNew<vtkSVGExporter> exporter;
   exporter->SetRenderWindow(view->GetRenderWindow());
   exporter->SetFileName(tmp.c_str());
   exporter->Write();
-  if (access(tmp.c_str(), R_OK) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
+  if (access(tmp.c_str(), R_OK) != 0) {
+    discardTemporary(tmp);
     throw std::runtime_error(path + ": cannot write the plot");
   }
+  commitTemporary(tmp, path);
 }
 
 }  // namespace metricmap::viz

@@ -7,18 +7,23 @@
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 
+#include "metricmap/io/atomic_file.h"
+#include "metricmap/io/output_set.h"
+
 namespace metricmap::viz {
 
 void writeVtkPng(vtkAlgorithmOutput* image, const std::string& path) {
-  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
+  checkOutputPath(path);
+  const std::string tmp = temporaryPathFor(path);
   vtkNew<vtkPNGWriter> writer;
   writer->SetFileName(tmp.c_str());
   writer->SetInputConnection(image);
   writer->Write();
-  if (writer->GetErrorCode() != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
+  if (writer->GetErrorCode() != 0) {
+    discardTemporary(tmp);
     throw std::runtime_error(path + ": cannot write PNG");
   }
+  commitTemporary(tmp, path);
 }
 
 }  // namespace metricmap::viz
