@@ -26,6 +26,7 @@
 #include "metricmap/io/output_set.h"
 #include "metricmap/occupancy/occupancy_export.h"
 #include "metricmap/occupancy/octomap_io.h"
+#include "metricmap/occupancy/scan_casting.h"
 #include "octomap_quiet.h"
 #include "ranks.h"
 #include "table.h"
@@ -76,37 +77,15 @@ std::string baseName(const std::string& path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-/// A PCD's header must declare its sensor pose: the beams start there.
-void requireViewpoint(const std::string& path) {
-  std::ifstream in = openRegularFile(path);  // a FIFO would block here
-  std::string line;
-  for (int i = 0; i < 32 && std::getline(in, line); ++i) {
-    if (line.rfind("VIEWPOINT", 0) == 0) return;
-    if (line.rfind("DATA", 0) == 0) break;
-  }
-  throw InputError(path + ": no VIEWPOINT line: the sensor pose (origin of the beams) is unknown");
-}
-
-struct Totals {
-  std::size_t frames = 0, points = 0, beams = 0, cut = 0, non_finite = 0;
-  double load_s = 0, insert_s = 0, write_s = 0;
+struct Totals : ScanCastTotals {
+  double write_s = 0;
   double insert_cpu_s = -1;  ///< distributed: insert seconds summed over the ranks
 };
 
 void castScans(const OccupancyOptions& o, const Ranks& ranks, LogOddsMap& map, Totals& tot) {
   const bool progress = isatty(STDERR_FILENO) != 0 && !ranks.distributed();
   const auto t_start = std::chrono::steady_clock::now();
-  auto insert = [&](const Cloud& cloud, const Eigen::Vector3f* origin, std::size_t dropped) {
-    const auto t = std::chrono::steady_clock::now();
-    const ScanInsertReport r = origin ? map.insertScan(cloud, *origin) : map.insertScan(cloud);
-    tot.insert_s += secondsSince(t);
-    ++tot.frames;
-    tot.points += r.points + dropped;
-    tot.beams += r.beams;
-    tot.cut += r.beams_cut;
-    tot.non_finite += r.non_finite + dropped;
-  };
-  auto report = [&](std::size_t done, std::size_t total) {
+  const CastProgress report = [&](std::size_t done, std::size_t total) {
     if (!progress) return;
     const double elapsed = secondsSince(t_start);
     std::fprintf(stderr, "\rscan %zu/%zu  %.0f ms/scan  %.0f s left   ", done, total,
@@ -121,44 +100,13 @@ void castScans(const OccupancyOptions& o, const Ranks& ranks, LogOddsMap& map, T
     } catch (const std::invalid_argument& e) {
       throw UsageError(std::string("--frames: ") + e.what());
     }
-    const KittiSequence seq{o.inputs[0], o.sequence};
     const auto [first, last] = ranks.share(frames.size());
-    for (std::size_t k = first; k < last; ++k) {
-      const std::string scan = seq.scan(frames[k]);
-      if (access(scan.c_str(), R_OK) != 0) throw InputError(scan + ": missing frame");
-    }
-    const Eigen::Isometry3d tr = readKittiCalibTr(seq.calib());
-    const auto poses =
-        readKittiPoses(seq.poses(), *std::max_element(frames.begin(), frames.end()) + 1);
     const KittiWorld world = o.world == "camera" ? KittiWorld::Camera : KittiWorld::Velodyne;
-    for (std::size_t k = first; k < last; ++k) {
-      auto t = std::chrono::steady_clock::now();
-      Cloud scan, world_scan;
-      const LoadReport lr = loadCloud(seq.scan(frames[k]), scan);
-      const Eigen::Isometry3d to_world = kittiScanToWorld(poses[frames[k]], tr, world);
-      pcl::transformPointCloud(scan, world_scan, to_world.matrix().cast<float>());
-      tot.load_s += secondsSince(t);
-      const Eigen::Vector3f origin = to_world.translation().cast<float>();
-      insert(world_scan, &origin, lr.nonfinite_dropped);
-      report(k + 1 - first, last - first);
-    }
+    castKittiFrames(map, KittiSequence{o.inputs[0], o.sequence}, frames, first, last, world, tot,
+                    report);
   } else {
-    for (const std::string& path : o.inputs) {
-      if (!endsWith(path, ".pcd") && !endsWith(path, ".PCD"))
-        throw InputError(path +
-                         ": scans must be PCD files (VIEWPOINT = sensor pose) or one "
-                         "KITTI root");
-    }
     const auto [first, last] = ranks.share(o.inputs.size());
-    for (std::size_t k = first; k < last; ++k) {
-      auto t = std::chrono::steady_clock::now();
-      requireViewpoint(o.inputs[k]);
-      Cloud scan;
-      const LoadReport lr = loadCloud(o.inputs[k], scan);
-      tot.load_s += secondsSince(t);
-      insert(scan, nullptr, lr.nonfinite_dropped);
-      report(k + 1 - first, last - first);
-    }
+    castPcdScans(map, o.inputs, first, last, tot, report);
   }
   if (progress) std::fprintf(stderr, "\n");
 }

@@ -1,0 +1,96 @@
+#include "metricmap/occupancy/scan_casting.h"
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+
+#include <unistd.h>
+
+#include <pcl/common/transforms.h>
+
+#include "metricmap/exceptions.h"
+#include "metricmap/io/cloud_reader.h"
+#include "metricmap/io/input_file.h"
+
+namespace metricmap {
+namespace {
+
+using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+
+double secondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+void insertInto(LogOddsMap& map, const Cloud& cloud, const Eigen::Vector3f* origin,
+                std::size_t dropped, ScanCastTotals& totals) {
+  const auto t = std::chrono::steady_clock::now();
+  const ScanInsertReport r = origin ? map.insertScan(cloud, *origin) : map.insertScan(cloud);
+  totals.insert_s += secondsSince(t);
+  ++totals.frames;
+  totals.points += r.points + dropped;
+  totals.beams += r.beams;
+  totals.cut += r.beams_cut;
+  totals.non_finite += r.non_finite + dropped;
+}
+
+bool isPcd(const std::string& path) {
+  return path.size() > 4 && (path.compare(path.size() - 4, 4, ".pcd") == 0 ||
+                             path.compare(path.size() - 4, 4, ".PCD") == 0);
+}
+
+}  // namespace
+
+void castKittiFrames(LogOddsMap& map, const KittiSequence& sequence,
+                     const std::vector<std::size_t>& frames, std::size_t first, std::size_t last,
+                     KittiWorld world, ScanCastTotals& totals, const CastProgress& progress) {
+  if (frames.empty() || first >= last) return;
+  for (std::size_t k = first; k < last; ++k) {
+    const std::string scan = sequence.scan(frames[k]);
+    if (access(scan.c_str(), R_OK) != 0) throw InputError(scan + ": missing frame");
+  }
+  const Eigen::Isometry3d tr = readKittiCalibTr(sequence.calib());
+  const auto poses =
+      readKittiPoses(sequence.poses(), *std::max_element(frames.begin(), frames.end()) + 1);
+  for (std::size_t k = first; k < last; ++k) {
+    const auto t = std::chrono::steady_clock::now();
+    Cloud scan, world_scan;
+    const LoadReport lr = loadCloud(sequence.scan(frames[k]), scan);
+    const Eigen::Isometry3d to_world = kittiScanToWorld(poses[frames[k]], tr, world);
+    pcl::transformPointCloud(scan, world_scan, to_world.matrix().cast<float>());
+    totals.load_s += secondsSince(t);
+    const Eigen::Vector3f origin = to_world.translation().cast<float>();
+    insertInto(map, world_scan, &origin, lr.nonfinite_dropped, totals);
+    if (progress) progress(k + 1 - first, last - first);
+  }
+}
+
+void castPcdScans(LogOddsMap& map, const std::vector<std::string>& paths, std::size_t first,
+                  std::size_t last, ScanCastTotals& totals, const CastProgress& progress) {
+  for (const std::string& path : paths) {
+    if (!isPcd(path))
+      throw InputError(path +
+                       ": scans must be PCD files (VIEWPOINT = sensor pose) or one "
+                       "KITTI root");
+  }
+  for (std::size_t k = first; k < last && k < paths.size(); ++k) {
+    const auto t = std::chrono::steady_clock::now();
+    requirePcdViewpoint(paths[k]);
+    Cloud scan;
+    const LoadReport lr = loadCloud(paths[k], scan);
+    totals.load_s += secondsSince(t);
+    insertInto(map, scan, nullptr, lr.nonfinite_dropped, totals);
+    if (progress) progress(k + 1 - first, last - first);
+  }
+}
+
+void requirePcdViewpoint(const std::string& path) {
+  std::ifstream in = openRegularFile(path);  // a FIFO would block here
+  std::string line;
+  for (int i = 0; i < 32 && std::getline(in, line); ++i) {
+    if (line.rfind("VIEWPOINT", 0) == 0) return;
+    if (line.rfind("DATA", 0) == 0) break;
+  }
+  throw InputError(path + ": no VIEWPOINT line: the sensor pose (origin of the beams) is unknown");
+}
+
+}  // namespace metricmap
