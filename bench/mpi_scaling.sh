@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# 1 vs 2 MPI ranks on 4 copies of the bundled KITTI frames (issue 14, acceptance 3).
+# 1 vs 2 MPI ranks on 4 copies of the bundled KITTI frames.
 # Google Benchmark cannot host mpirun (one process, MPI_Init once), so this script times whole
 # `mpirun -np N metricmap ... --distributed` runs with hyperfine; both sides pay mpirun's start.
 #   occupancy: frames 0-5 four times (24 scans cast, 0.1 m voxels, 40 m range)
