@@ -112,12 +112,17 @@ GridOutcome buildRanks(const GridOptions& o, const Ranks& ranks) {
   const auto t0 = std::chrono::steady_clock::now();
   double load_s = 0.0;
   const auto [first, last] = ranks.share(o.files.size());
+  // The rank's files as one input, as the one-process command does: one build, one part.
+  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   for (std::size_t i = first; i < last; ++i) {
     const LoadedCloud loaded = loadTimed(o.files[i]);
     load_s += loaded.seconds;
-    grid.setInputCloud(loaded.cloud);
+    *cloud += *loaded.cloud;
+  }
+  if (!cloud->empty()) {
+    grid.setInputCloud(cloud);
     grid.compute();
-    local.add({grid.getLayout(), grid.getCells(), grid.getStatistics()}, loaded.cloud->size());
+    local.add({grid.getLayout(), grid.getCells(), grid.getStatistics()}, cloud->size());
   }
   g.load_s = load_s;
   if (o.out.empty() && o.cells.empty()) {  // statistics only: no cells gathered on rank 0
