@@ -20,21 +20,12 @@
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/input_file.h"
 
+#include "temp_dir.h"
+
 namespace metricmap {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() / ("metricmap_checked_" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string operator/(const std::string& name) const { return (path / name).string(); }
-};
 
 std::string bytesOf(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -43,7 +34,7 @@ std::string bytesOf(const std::string& path) {
 
 template <typename PointT>
 void expectSameAsciiAsPcl(const pcl::PointCloud<PointT>& cloud, const std::string& name) {
-  TempDir dir;
+  TempDir dir("checked");
   pcl::PCDWriter pcl_writer;
   ASSERT_EQ(pcl_writer.writeASCII(dir / "pcl.pcd", cloud, 8), 0);
   savePcdAtomic(dir / "ours.pcd", cloud, PcdFormat::Ascii);
@@ -106,7 +97,7 @@ TEST(CheckedWriters, MessagesNameTheDestinationNotATemporary) {
 }
 
 TEST(CheckedWriters, WriteFailuresLeaveNothing) {
-  TempDir dir;
+  TempDir dir("checked");
   fs::create_directories(dir / "ro");
   ::chmod((dir / "ro").c_str(), 0555);
   if (::geteuid() != 0) {  // root writes anyway
@@ -125,7 +116,7 @@ TEST(CheckedWriters, WriteFailuresLeaveNothing) {
 }
 
 TEST(CheckedReaders, SpecialFilesAreRefusedBeforeTheyAreOpened) {
-  TempDir dir;
+  TempDir dir("checked");
   ASSERT_EQ(::mkfifo((dir / "f.bt").c_str(), 0600), 0);
   for (const std::string& path : {dir / "f.bt", std::string("/dev/zero"), dir.path.string()}) {
     try {

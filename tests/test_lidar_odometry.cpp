@@ -144,6 +144,7 @@ TEST(LidarOdometryParts, VoxelMapNearestAgainstBruteForce) {
   for (const auto& kv : per_voxel) expected += std::min(kv.second, 4);
   EXPECT_EQ(map.points(), expected);
   EXPECT_EQ(map.voxels(), per_voxel.size());
+  VoxelHashMap::Neighbourhood hood;
   for (int i = 0; i < 500; ++i) {
     const Eigen::Vector3d q(u(rng), u(rng), u(rng) * 0.2);
     double best = 1e9;
@@ -158,7 +159,28 @@ TEST(LidarOdometryParts, VoxelMapNearestAgainstBruteForce) {
     // Within one voxel the 27-voxel search is exact.
     const bool found = map.nearest(q, 0.99, got);
     EXPECT_EQ(found, best < 0.99);
-    if (found) EXPECT_EQ(got, arg);
+    if (found) {
+      EXPECT_EQ(got, arg);
+    }
+    // The cached form, its neighbourhood reused by nearby queries (same voxel or not), as ICP
+    // reuses it between steps: the same answers.
+    for (int j = 0; j < 4; ++j) {
+      const Eigen::Vector3d qj = q + Eigen::Vector3d(0.3 * j, -0.2 * j, 0.05 * j);
+      double best_j = 1e9;
+      Eigen::Vector3d arg_j;
+      for (const auto& h : held) {
+        if ((h - qj).norm() < best_j) {
+          best_j = (h - qj).norm();
+          arg_j = h;
+        }
+      }
+      Eigen::Vector3d got_j;
+      const bool found_j = map.nearestCached(qj, 0.99, hood, got_j);
+      EXPECT_EQ(found_j, best_j < 0.99);
+      if (found_j) {
+        EXPECT_EQ(got_j, arg_j);
+      }
+    }
   }
   map.removeFar(Eigen::Vector3d::Zero(), 5.0);
   for (const auto& h : map.cloud()) EXPECT_LT(h.norm(), 5.0 + 2.0 * std::sqrt(3.0));

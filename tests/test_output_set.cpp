@@ -12,21 +12,12 @@
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/output_set.h"
 
+#include "temp_dir.h"
+
 namespace metricmap {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() / ("metricmap_outputs_" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string operator/(const std::string& name) const { return (path / name).string(); }
-};
 
 std::string slurp(const std::string& p) {
   std::ifstream in(p);
@@ -44,7 +35,7 @@ std::size_t entries(const fs::path& dir) {
 }  // namespace
 
 TEST(OutputSet, CommitsEveryOutputTogether) {
-  TempDir d;
+  TempDir d("outputs");
   OutputSet set;
   const std::string a = set.stage(d / "a.csv");
   const std::string b = set.stage(d / "b.svg");
@@ -60,7 +51,7 @@ TEST(OutputSet, CommitsEveryOutputTogether) {
 }
 
 TEST(OutputSet, NothingLeftWhenALaterOutputFails) {
-  TempDir d;
+  TempDir d("outputs");
   {
     OutputSet set;
     writeTextAtomic(set.stage(d / "first.png"), "x");
@@ -72,7 +63,7 @@ TEST(OutputSet, NothingLeftWhenALaterOutputFails) {
 }
 
 TEST(OutputSet, SpecialFilesAndDirectoriesAreNeverReplaced) {
-  TempDir d;
+  TempDir d("outputs");
   ASSERT_EQ(::mkfifo((d / "fifo.pcd").c_str(), 0600), 0);
   fs::create_directories(d / "dir.csv");
   OutputSet set;
@@ -87,7 +78,7 @@ TEST(OutputSet, SpecialFilesAndDirectoriesAreNeverReplaced) {
 }
 
 TEST(OutputSet, StepsIntoAnExistingDirectory) {
-  TempDir d;
+  TempDir d("outputs");
   fs::create_directories(d / "steps.v2");
   writeTextAtomic(d / "steps.v2/old.txt", "keep");
   OutputSet set;

@@ -14,6 +14,8 @@
 #include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/exceptions.h"
 
+#include "temp_dir.h"
+
 namespace metricmap {
 namespace {
 
@@ -59,20 +61,6 @@ TEST(RigidTransform, ProperRotationsAndBoundedTranslationsOnly) {
   EXPECT_NO_THROW(checkRigidTransform(row, "3x4 only", /*check_last_row=*/false));
 }
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() / ("metricmap_rigid_" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path / name) << text;
-    return (path / name).string();
-  }
-};
-
 std::string kittiError(const std::function<void()>& read) {
   try {
     read();
@@ -83,7 +71,7 @@ std::string kittiError(const std::function<void()>& read) {
 }
 
 TEST(RigidTransform, KittiPosesAndCalibAreChecked) {
-  TempDir dir;
+  TempDir dir("rigid");
   const std::string id = "1 0 0 0 0 1 0 0 0 0 1 0\n";
   const std::string poses = dir.write("p.txt", id + "1 0 0 1e308 0 1 0 0 0 0 1 0\n");
   EXPECT_NE(kittiError([&] { readKittiPoses(poses, 2); }).find("p.txt: line 2: translation"),

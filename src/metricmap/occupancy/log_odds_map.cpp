@@ -144,20 +144,7 @@ void LogOddsMap::merge(const LogOddsMap& other) {
   }
   if (&other == this) throw std::invalid_argument("merge: a map cannot be merged with itself");
   for (const VoxelBlock& ob : other.blocks_) {
-    VoxelBlock& blk = blockFor(ob.key);
-    for (int w = 0; w < kBlockWords; ++w) {
-      std::uint64_t bits = ob.known[w];
-      known_ += static_cast<std::size_t>(__builtin_popcountll(bits & ~blk.known[w]));
-      const std::uint64_t unknown = ~blk.known[w];
-      blk.known[w] |= bits;
-      while (bits != 0) {
-        const int i = __builtin_ctzll(bits);
-        bits &= bits - 1;
-        float& v = blk.log_odds[w * 64 + i];
-        const float add = ob.log_odds[w * 64 + i];
-        v = (unknown >> i) & 1 ? add : clampLogOdds(v + add, clamp_min_, clamp_max_);
-      }
-    }
+    mergeInto(blockFor(ob.key), ob.known, [&ob](int index) { return ob.log_odds[index]; });
   }
 }
 
@@ -168,17 +155,21 @@ void LogOddsMap::forEachBlock(
 
 void LogOddsMap::mergeBlock(std::uint64_t block_key, const std::uint64_t* known,
                             const float* values) {
-  VoxelBlock& blk = blockFor(block_key);
+  mergeInto(blockFor(block_key), known, [&values](int) { return *values++; });
+}
+
+template <typename NextValue>
+void LogOddsMap::mergeInto(VoxelBlock& blk, const std::uint64_t* known, NextValue value_of) {
   for (int w = 0; w < kBlockWords; ++w) {
     std::uint64_t bits = known[w];
     known_ += static_cast<std::size_t>(__builtin_popcountll(bits & ~blk.known[w]));
     const std::uint64_t unknown = ~blk.known[w];
     blk.known[w] |= bits;
-    while (bits != 0) {
+    while (bits != 0) {  // voxels in ascending index order
       const int i = __builtin_ctzll(bits);
       bits &= bits - 1;
       float& v = blk.log_odds[w * 64 + i];
-      const float add = *values++;
+      const float add = value_of(w * 64 + i);
       v = (unknown >> i) & 1 ? add : clampLogOdds(v + add, clamp_min_, clamp_max_);
     }
   }

@@ -138,6 +138,10 @@ class LogOddsMap {
 
  private:
   detail::VoxelBlock& blockFor(std::uint64_t block_key);
+  /// Add the known voxels of `known` into `blk`; value_of(index) gives each one's log-odds,
+  /// called in ascending index order.
+  template <typename NextValue>
+  void mergeInto(detail::VoxelBlock& blk, const std::uint64_t* known, NextValue value_of);
   void applyScan(ScanInsertReport& report);
 
   LogOddsParams params_;
