@@ -43,7 +43,9 @@ void BM_LidarOdometryForwardAndBack(benchmark::State& state) {
   std::vector<double> ms;
   std::size_t max_voxels = 0, max_points = 0, max_bytes = 0, restarts = 0;
   for (auto _ : state) {
-    LidarOdometry odo;
+    LidarOdometryConfig config;
+    config.threads = 1;
+    LidarOdometry odo(config);
     ms.clear();
     for (std::size_t k = 0; k < 1000; ++k) {
       const auto t0 = std::chrono::steady_clock::now();
@@ -69,11 +71,14 @@ void BM_LidarOdometryForwardAndBack(benchmark::State& state) {
 }
 BENCHMARK(BM_LidarOdometryForwardAndBack)->Unit(benchmark::kSecond)->Iterations(1);
 
-// One scan of the odometry in its steady state (frames 0-5 forward, the next scan timed).
+// One scan of the odometry in its steady state (frames 0-5 forward, the next scan timed), with
+// 1 and 2 threads for the pairing (the poses are the same).
 void BM_LidarOdometryScan(benchmark::State& state) {
   const auto& s = scans();
   std::size_t k = 0;
-  LidarOdometry odo;
+  LidarOdometryConfig config;
+  config.threads = static_cast<unsigned>(state.range(0));
+  LidarOdometry odo(config);
   for (auto _ : state) {
     state.PauseTiming();
     if (k % 10 == 0) odo.reset();  // keep the run forward-and-back, like the long run
@@ -82,7 +87,12 @@ void BM_LidarOdometryScan(benchmark::State& state) {
     ++k;
   }
 }
-BENCHMARK(BM_LidarOdometryScan)->Unit(benchmark::kMillisecond)->MinTime(3.0);
+BENCHMARK(BM_LidarOdometryScan)
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(3.0);
 
 // PCL's GICP as `--refine gicp` uses it: registrationCloud (3-40 m, above the ground, 0.2 m
 // voxels) of the new scan, then refineScanPose (two stages, 1.0 m then 0.25 m) against the

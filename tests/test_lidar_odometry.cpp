@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <set>
+#include <tuple>
 
 #include <pcl/filters/voxel_grid.h>
 #include <pcl/registration/gicp.h>
@@ -198,6 +200,30 @@ TEST(LidarOdometryParts, DownsampleKeepsFirstPointPerVoxel) {
   EXPECT_EQ(out[1], pts[2]);
   EXPECT_THROW(voxelDownsample(pts, -1.0), std::invalid_argument);
   EXPECT_THROW(voxelDownsample({{1e9, 0, 0}}, 0.1), CapacityError);
+}
+
+TEST(LidarOdometryParts, DownsampleAgainstASetOnManyVoxels) {
+  // Far more distinct voxels than the first table holds, repeated points and negative cells.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-30.0, 30.0);
+  Points pts;
+  for (int i = 0; i < 40000; ++i) pts.emplace_back(u(rng), u(rng), 0.1 * u(rng));
+  for (int i = 0; i < 10000; ++i) pts.push_back(pts[static_cast<std::size_t>(i) * 3]);
+  for (const double voxel : {0.05, 0.5, 1.5}) {
+    std::set<std::tuple<long, long, long>> seen;
+    std::vector<int> expected;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const auto key = std::make_tuple(std::lround(std::floor(pts[i].x() / voxel)),
+                                       std::lround(std::floor(pts[i].y() / voxel)),
+                                       std::lround(std::floor(pts[i].z() / voxel)));
+      if (seen.insert(key).second) expected.push_back(static_cast<int>(i));
+    }
+    std::vector<int> kept;
+    const Points out = voxelDownsample(pts, voxel, &kept);
+    EXPECT_EQ(kept, expected) << "voxel " << voxel;
+    ASSERT_EQ(out.size(), expected.size());
+    EXPECT_GT(expected.size(), voxel < 0.1 ? 30000u : 100u);
+  }
 }
 
 TEST(LidarOdometryParts, AdaptiveThresholdHandValues) {

@@ -1,6 +1,7 @@
 // Builds with 1, 2, 3 and 5 threads (oversubscribed on this machine) give the same cells,
 // nodes, counts and means, bit for bit, on real KITTI points (with NaN points and an index
-// subset as well); the VoxelGrid-equivalent grid keeps its cell count.
+// subset as well); the VoxelGrid-equivalent grid keeps its cell count; the odometry's poses are
+// the same bits for every thread count.
 #include <cstring>
 
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include "metricmap/grid/occupancy_grid.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/octree/adaptive_octree.h"
+#include "metricmap/registration/lidar_odometry.h"
 #include "test_data.h"
 
 namespace metricmap {
@@ -110,6 +112,31 @@ TEST(Threads, OctreeNodesAndMeansDoNotDependOnTheThreadCount) {
         ASSERT_TRUE(sameBits(a[i].mean, b[i].mean)) << "node " << i << ", " << threads;
         ASSERT_TRUE(sameBits(a[i].min, b[i].min) && sameBits(a[i].max, b[i].max)) << i;
       }
+    }
+  }
+}
+
+TEST(Threads, OdometryPosesDoNotDependOnTheThreadCount) {
+  const KittiSequence seq{dataPath("kitti_odometry_00"), "00"};
+  std::vector<Cloud> scans(6);
+  for (std::size_t f = 0; f < scans.size(); ++f) loadCloud(seq.scan(f), scans[f]);
+  auto run = [&](unsigned threads) {
+    LidarOdometryConfig config;
+    config.threads = threads;
+    LidarOdometry odo(config);
+    for (const Cloud& scan : scans) odo.registerFrame(scan);
+    return odo.poses();
+  };
+  const std::vector<Eigen::Isometry3d> one = run(1);
+  ASSERT_EQ(one.size(), scans.size());
+  EXPECT_GT(one.back().translation().norm(), 3.0);  // the car moved: a real run, not identity
+  for (unsigned threads : {2u, 3u, 5u}) {
+    const std::vector<Eigen::Isometry3d> many = run(threads);
+    ASSERT_EQ(many.size(), one.size());
+    for (std::size_t f = 0; f < one.size(); ++f) {
+      EXPECT_EQ(std::memcmp(one[f].matrix().data(), many[f].matrix().data(), sizeof(double) * 16),
+                0)
+          << "frame " << f << ", " << threads << " threads";
     }
   }
 }

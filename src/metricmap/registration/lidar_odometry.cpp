@@ -51,6 +51,7 @@ PointToPointIcpParams icpParams(const LidarOdometryConfig& c, double threshold) 
   p.max_iterations = c.max_iterations;
   p.convergence = c.convergence;
   p.degeneracy_ratio = c.degeneracy_ratio;
+  p.threads = c.threads;
   return p;
 }
 

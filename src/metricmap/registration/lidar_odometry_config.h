@@ -48,6 +48,9 @@ struct LidarOdometryConfig {
   /// few dozen points (a truncated or filtered file) constrains no pose, so it is refused
   /// naming the frame rather than registered to noise. A real sweep has ~100k.
   int min_points = 100;
+  /// \brief Threads for the scan-to-map pairing (0: all hardware threads). The poses do not
+  /// depend on it: the normal equations are summed in a fixed order.
+  unsigned threads = 0;
 };
 
 }  // namespace metricmap

@@ -5,6 +5,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
+#include "metricmap/detail/parallel.h"
 #include "metricmap/registration/se3.h"
 
 namespace metricmap {
@@ -25,16 +26,19 @@ Eigen::Matrix3d minusHat(const Eigen::Vector3d& p) {
   return m;
 }
 
-// Pairs and normal equations at pose t. Residual in the sensor frame r = R^T (t p - q); its
-// Jacobian for the right perturbation (dt, dtheta) is [I, -[p]x].
-NormalEquations buildSystem(const std::vector<Eigen::Vector3d>& source, const VoxelHashMap& map,
-                            const Eigen::Isometry3d& t, double threshold,
-                            std::vector<VoxelHashMap::Neighbourhood>& cache) {
-  NormalEquations ne;
+// Source points per block of the normal equations: the blocks' sums are added in block order,
+// whatever thread computed them.
+constexpr std::size_t kBlock = 256;
+
+// Pairs and normal equations of source[begin, end) at pose t. Residual in the sensor frame
+// r = R^T (t p - q); its Jacobian for the right perturbation (dt, dtheta) is [I, -[p]x].
+void addPairs(const std::vector<Eigen::Vector3d>& source, std::size_t begin, std::size_t end,
+              const VoxelHashMap& map, const Eigen::Isometry3d& t, double threshold,
+              std::vector<VoxelHashMap::Neighbourhood>& cache, NormalEquations& ne) {
   const Eigen::Matrix3d rt = t.linear().transpose();
   const double kernel2 = (threshold / 3.0) * (threshold / 3.0);
   Eigen::Vector3d q;
-  for (std::size_t i = 0; i < source.size(); ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
     const Eigen::Vector3d& p = source[i];
     const Eigen::Vector3d w = t * p;
     if (!map.nearestCached(w, threshold, cache[i], q)) continue;
@@ -48,6 +52,28 @@ NormalEquations buildSystem(const std::vector<Eigen::Vector3d>& source, const Vo
     ne.g.head<3>() += weight * r;
     ne.g.tail<3>().noalias() += weight * j.transpose() * r;
     ++ne.pairs;
+  }
+}
+
+NormalEquations buildSystem(const std::vector<Eigen::Vector3d>& source, const VoxelHashMap& map,
+                            const Eigen::Isometry3d& t, double threshold, unsigned threads,
+                            std::vector<VoxelHashMap::Neighbourhood>& cache,
+                            std::vector<NormalEquations>& blocks) {
+  const std::size_t n = source.size(), count = (n + kBlock - 1) / kBlock;
+  blocks.assign(count, NormalEquations());
+  const unsigned used = resolveThreads(threads, count, 2);
+  parallelRun(used, [&](unsigned th) {
+    const auto range = chunkOf(count, used, th);
+    for (std::size_t b = range.first; b < range.second; ++b) {
+      addPairs(source, b * kBlock, std::min(n, (b + 1) * kBlock), map, t, threshold, cache,
+               blocks[b]);
+    }
+  });
+  NormalEquations ne;
+  for (const NormalEquations& b : blocks) {
+    ne.h += b.h;
+    ne.g += b.g;
+    ne.pairs += b.pairs;
   }
   ne.h.bottomLeftCorner<3, 3>() = ne.h.topRightCorner<3, 3>().transpose();
   return ne;
@@ -91,8 +117,10 @@ PointToPointIcpResult alignPointToPoint(const std::vector<Eigen::Vector3d>& sour
   res.pose = initial;
   if (source.empty() || map.empty()) return res;
   std::vector<VoxelHashMap::Neighbourhood> cache(source.size());
+  std::vector<NormalEquations> blocks;
   for (res.iterations = 0; res.iterations < params.max_iterations;) {
-    const NormalEquations ne = buildSystem(source, map, res.pose, params.threshold, cache);
+    const NormalEquations ne =
+        buildSystem(source, map, res.pose, params.threshold, params.threads, cache, blocks);
     if (ne.pairs < 6) break;
     const Vector6d step = ne.h.ldlt().solve(-ne.g);
     if (!step.allFinite()) break;

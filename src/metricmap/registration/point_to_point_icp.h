@@ -16,6 +16,10 @@ struct PointToPointIcpParams {
   int max_iterations = 500;        ///< Gauss-Newton steps, at most
   double convergence = 1e-4;       ///< stop when |update| (m + rad) is below this
   double degeneracy_ratio = 1e-3;  ///< eigenvalue / largest below which a direction is held
+  /// \brief Threads for the pairing and the normal equations (0: all hardware threads). The
+  /// sums are taken over fixed blocks of source points in a fixed order, so the result does
+  /// not depend on this number.
+  unsigned threads = 1;
 };
 
 struct PointToPointIcpResult {

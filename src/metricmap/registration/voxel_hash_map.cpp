@@ -43,8 +43,7 @@ void VoxelHashMap::removeFar(const Eigen::Vector3d& origin, double radius) {
 bool VoxelHashMap::nearestCached(const Eigen::Vector3d& p, double max_distance, Neighbourhood& hood,
                                  Eigen::Vector3d& q) const {
   const Eigen::Array3d s = p.array() * inv_voxel_;
-  const Eigen::Array3d cell = s.floor();
-  const Eigen::Array3i c = voxelOf(p, inv_voxel_);
+  const Eigen::Array3i c = voxelOfScaled(s, p);
   const std::uint64_t key = packVoxel(c.x(), c.y(), c.z());
   if (key != hood.key) {
     hood.key = key;
@@ -61,35 +60,42 @@ bool VoxelHashMap::nearestCached(const Eigen::Vector3d& p, double max_distance, 
     }
     return hood.cells[i];
   };
-  // Squared distance from p to the faces of its voxel, below and above, per axis.
-  const Eigen::Array3d f = s - cell;
+  // Squared distance from p to the neighbour voxels' boxes, per axis and offset -1, 0, +1
+  // (index 0, 1, 2): a neighbour's box distance is the sum over its three offsets.
+  const Eigen::Array3d f = s - c.cast<double>();
   const Eigen::Array3d below = (f * voxel_).square(), above = ((1.0 - f) * voxel_).square();
+  const double box[3][3] = {
+      {below[0], 0.0, above[0]}, {below[1], 0.0, above[1]}, {below[2], 0.0, above[2]}};
   double best = max_distance * max_distance;
   int best_cell = 27;
   bool found = false;
-  auto visit = [&](int i) {
-    const Cell* points = cellAt(i);
-    if (points == nullptr) return;
-    for (const Eigen::Vector3d& m : *points) {
-      const double d2 = (m - p).squaredNorm();
-      if (d2 < best || (d2 == best && found && i < best_cell)) {
-        best = d2;
-        best_cell = i;
-        q = m;
-        found = true;
+  // A margin for rounding: skip only voxels clearly farther than the best so far.
+  auto farther = [&](double d2) { return d2 > best * (1.0 + 1e-9) + 1e-12; };
+  // Own voxel first (it usually holds the answer), then outwards, one axis at a time, so that
+  // a slab of 9 or a row of 3 voxels whose nearest face is already too far is skipped whole.
+  // Ties go to the lower index, as a scan of the 27 voxels in index order would give.
+  constexpr int kOrder[3] = {1, 0, 2};
+  for (const int x : kOrder) {
+    if (farther(box[0][x])) continue;
+    for (const int y : kOrder) {
+      const double bxy = box[0][x] + box[1][y];
+      if (farther(bxy)) continue;
+      for (const int z : kOrder) {
+        if (farther(bxy + box[2][z])) continue;
+        const int i = 9 * x + 3 * y + z;
+        const Cell* points = cellAt(i);
+        if (points == nullptr) continue;
+        for (const Eigen::Vector3d& m : *points) {
+          const double d2 = (m - p).squaredNorm();
+          if (d2 < best || (d2 == best && found && i < best_cell)) {
+            best = d2;
+            best_cell = i;
+            q = m;
+            found = true;
+          }
+        }
       }
     }
-  };
-  constexpr int kOwn = 13;  // dx = dy = dz = 0: it usually holds the answer
-  visit(kOwn);
-  for (int i = 0; i < 27; ++i) {
-    if (i == kOwn) continue;
-    const int d[3] = {i / 9 - 1, i / 3 % 3 - 1, i % 3 - 1};
-    double box = 0.0;
-    for (int a = 0; a < 3; ++a) box += d[a] < 0 ? below[a] : (d[a] > 0 ? above[a] : 0.0);
-    // A margin for rounding: skip only voxels clearly farther than the best so far.
-    if (box > best * (1.0 + 1e-9) + 1e-12) continue;
-    visit(i);
   }
   return found;
 }

@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <string>
 
 #include <Eigen/Core>
 
@@ -19,17 +18,22 @@ inline std::uint64_t packVoxel(std::int64_t x, std::int64_t y, std::int64_t z) {
          (static_cast<std::uint64_t>(y + kOffset) << 21) | static_cast<std::uint64_t>(z + kOffset);
 }
 
+/// \brief Throws the CapacityError of a point whose cell lies outside the 21-bit range.
+[[noreturn]] void throwVoxelRange(const Eigen::Vector3d& p);
+
+/// \brief Cell of a point already scaled to cell units (`s` = p / voxel), for `p`'s message.
+/// \throws CapacityError when the cell lies outside the 21-bit range
+inline Eigen::Array3i voxelOfScaled(const Eigen::Array3d& s, const Eigen::Vector3d& p) {
+  const Eigen::Array3d c = s.floor();
+  constexpr double kLimit = (1 << 20) - 2;  // room for the neighbours of a cell
+  if (!(c.abs() < kLimit).all()) throwVoxelRange(p);
+  return c.cast<int>();
+}
+
 /// \brief Cell of `p` for cells of `inv_voxel`^-1 metres.
 /// \throws CapacityError when the cell lies outside the 21-bit range
 inline Eigen::Array3i voxelOf(const Eigen::Vector3d& p, double inv_voxel) {
-  const Eigen::Array3d c = (p * inv_voxel).array().floor();
-  constexpr double kLimit = (1 << 20) - 2;  // room for the neighbours of a cell
-  if (!(c.abs() < kLimit).all()) {
-    throw CapacityError("voxel index of point (" + std::to_string(p.x()) + ", " +
-                        std::to_string(p.y()) + ", " + std::to_string(p.z()) +
-                        ") outside +-2^20 cells");
-  }
-  return c.cast<int>();
+  return voxelOfScaled(p.array() * inv_voxel, p);
 }
 
 /// \brief Hash of a packed key (multiplicative, high bits folded down).

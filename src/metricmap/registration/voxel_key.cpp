@@ -1,0 +1,13 @@
+#include "metricmap/registration/voxel_key.h"
+
+#include <string>
+
+namespace metricmap {
+
+void throwVoxelRange(const Eigen::Vector3d& p) {
+  throw CapacityError("voxel index of point (" + std::to_string(p.x()) + ", " +
+                      std::to_string(p.y()) + ", " + std::to_string(p.z()) +
+                      ") outside +-2^20 cells");
+}
+
+}  // namespace metricmap
