@@ -25,6 +25,7 @@ struct GridOptions {
   float cell_size = 0.0f;
   std::string origin = "cloud-min";
   bool origin_given = false, distributed = false;
+  unsigned threads = 0;  ///< 0: all hardware threads (with --distributed: those of the rank)
   std::string out, cells, format = "table", pcd_format = "binary";
 };
 
@@ -83,6 +84,7 @@ GridOutcome buildOne(const GridOptions& o) {
   OccupancyGrid<pcl::PointXYZ> grid;
   grid.setCellSize(o.cell_size);
   grid.setOrigin(o.origin == "world" ? GridOrigin::WorldAligned : GridOrigin::CloudMinimum);
+  grid.setNumberOfThreads(o.threads);
   grid.setInputCloud(loaded.cloud);
   grid.filter(g.means);
   g.grid_s = secondsSince(t1);
@@ -108,7 +110,7 @@ GridOutcome buildRanks(const GridOptions& o, const Ranks& ranks) {
   OccupancyGrid<pcl::PointXYZ> grid;
   grid.setCellSize(o.cell_size);
   grid.setOrigin(GridOrigin::WorldAligned);
-  grid.setNumberOfThreads(ranks.threads(0));
+  grid.setNumberOfThreads(o.threads != 0 ? o.threads : ranks.threads(0));
   const auto t0 = std::chrono::steady_clock::now();
   double load_s = 0.0;
   const auto [first, last] = ranks.share(o.files.size());
@@ -181,6 +183,11 @@ void addGridCommand(CLI::App& app) {
       ->each([o](const std::string&) { o->origin_given = true; });
   sub->add_option("--out", o->out, "Write the cell means as a PCD")->check(kOutputFile);
   sub->add_option("--cells", o->cells, "Write one CSV row per occupied cell")->check(kOutputFile);
+  sub->add_option("--threads", o->threads,
+                  "Build threads (0: all hardware threads; with --distributed, the node's "
+                  "threads shared among its ranks); the result does not depend on it")
+      ->check(CLI::Range(0u, 1024u))
+      ->capture_default_str();
   sub->add_flag("--distributed", o->distributed,
                 "Run as MPI ranks (mpirun -np N metricmap grid ...): each rank bins its share of "
                 "the files, cells are reduced by tile; needs --origin world (the default then)");

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -172,7 +173,7 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
   if (from_file) tot.load_s = secondsSince(t);
   if (!from_file) castScans(o, ranks, map, tot);
   if (ranks.distributed()) {
-    map = ranks.reduce(map);
+    map = ranks.reduce(std::move(map));
     reduceTotals(ranks, tot);
     if (!ranks.isRoot()) return;
   }

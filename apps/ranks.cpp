@@ -1,5 +1,7 @@
 #include "ranks.h"
 
+#include <utility>
+
 #include <CLI/CLI.hpp>
 
 #include "cli_common.h"
@@ -49,8 +51,8 @@ void Ranks::run(const std::function<void()>& work) const {
 GridAccumulator Ranks::reduce(const GridAccumulator& local) const {
   return mpi_ ? distributed::reduceGrid(local) : local;
 }
-LogOddsMap Ranks::reduce(const LogOddsMap& local) const {
-  return mpi_ ? distributed::reduceLogOdds(local) : local;
+LogOddsMap Ranks::reduce(LogOddsMap local) const {
+  return mpi_ ? distributed::reduceLogOdds(std::move(local)) : local;
 }
 GridSummary Ranks::reduceSummary(const GridAccumulator& local) const {
   return mpi_ ? distributed::reduceGridSummary(local) : local.summary();
@@ -76,7 +78,7 @@ unsigned Ranks::threads(unsigned fallback) const { return fallback; }
 std::pair<std::size_t, std::size_t> Ranks::share(std::size_t n) const { return {0, n}; }
 void Ranks::run(const std::function<void()>& work) const { work(); }
 GridAccumulator Ranks::reduce(const GridAccumulator& local) const { return local; }
-LogOddsMap Ranks::reduce(const LogOddsMap& local) const { return local; }
+LogOddsMap Ranks::reduce(LogOddsMap local) const { return local; }
 GridSummary Ranks::reduceSummary(const GridAccumulator& local) const { return local.summary(); }
 void Ranks::sum(std::vector<std::uint64_t>&) const {}
 void Ranks::max(std::vector<double>&) const {}

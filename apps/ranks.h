@@ -44,7 +44,7 @@ class Ranks {
 
   /// \brief Collectives (identity in one process): the whole job's result on rank 0.
   GridAccumulator reduce(const GridAccumulator& local) const;
-  LogOddsMap reduce(const LogOddsMap& local) const;
+  LogOddsMap reduce(LogOddsMap local) const;
   /// \brief Only the grid's totals and cell box on rank 0 (no cells gathered).
   GridSummary reduceSummary(const GridAccumulator& local) const;
   void sum(std::vector<std::uint64_t>& values) const;

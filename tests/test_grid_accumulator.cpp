@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <map>
+#include <tuple>
 
 #include "metricmap/common/tile_owner.h"
 #include "metricmap/exceptions.h"
@@ -94,6 +96,51 @@ TEST(GridAccumulator, MergedPartsEqualTheWholeGrid) {
     }
     EXPECT_EQ(merged.inputPoints(), input);
     expectSameGrid(one, merged.result());
+  }
+}
+
+// Parts added in order are reduced as a plain reference reduces them: cells with the same index
+// summed in the order they were added, bit for bit, for few parts (sorted runs merged) and for
+// many (more runs than are merged: sorted).
+TEST(GridAccumulator, PartsReduceInTheOrderTheyWereAdded) {
+  const Cloud::Ptr scan = load(dataPath("kitti_odometry_00/sequences/00/velodyne/000000.bin"));
+  const float cell = 0.2f;
+  for (std::size_t nparts : {3u, 10u, 100u}) {
+    SCOPED_TRACE(nparts);
+    GridAccumulator acc(cell);
+    std::map<std::array<std::int64_t, 3>, CellSum> reference;
+    for (std::size_t k = 0; k < nparts; ++k) {
+      auto part = std::make_shared<Cloud>();
+      for (std::size_t i = k; i < scan->size(); i += nparts) part->push_back((*scan)[i]);
+      const GridResult g = worldGrid(part, cell);
+      acc.add(g, part->size());
+      for (const GridCell& c : g.cells) {
+        CellSum& r = reference[c.index];
+        r.index = c.index;
+        r.count += c.count;
+        const double n = static_cast<double>(c.count);
+        for (int a = 0; a < 3; ++a) r.sum[a] += c.mean[a] * n;
+      }
+    }
+    const std::vector<CellSum>& cells = acc.cells();
+    ASSERT_EQ(cells.size(), reference.size());
+    std::size_t bad = 0, several = 0;
+    for (const CellSum& c : cells) {
+      const auto it = reference.find(c.index);
+      ASSERT_NE(it, reference.end());
+      bad += (c.count != it->second.count ||
+              std::memcmp(c.sum.data(), it->second.sum.data(), sizeof(double) * 3) != 0)
+                 ? 1
+                 : 0;
+      several += c.count > 1 ? 1 : 0;
+    }
+    EXPECT_EQ(bad, 0u);
+    EXPECT_GT(several, 5000u);                        // cells summed from several parts
+    for (std::size_t k = 1; k < cells.size(); ++k) {  // linear order: z, then y, then x
+      const auto& a = cells[k - 1].index;
+      const auto& b = cells[k].index;
+      ASSERT_TRUE(std::make_tuple(a[2], a[1], a[0]) < std::make_tuple(b[2], b[1], b[0]));
+    }
   }
 }
 

@@ -67,6 +67,46 @@ TEST(LogOddsTransfer, FrameRangesExchangedByOwnerEqualOneProcess) {
   EXPECT_GT(exact, all.knownVoxels() * 9 / 10);  // most sums are even bit-identical
 }
 
+// A rank keeps its own tiles in memory (mergeOwnedBlocks) instead of sending them to itself:
+// the same voxels and the same bits as merging its buffer, and its buffer is left empty.
+TEST(LogOddsTransfer, OwnTilesKeptInMemoryEqualTheirBuffer) {
+  const LogOddsParams p = wideClamps();
+  LogOddsMap first(p), second(p);
+  for (std::size_t f = 0; f < 3; ++f) {
+    const test::WorldScan s = test::subsample(test::kittiWorldScan(f), 4);
+    first.insertScan(s.points, s.origin);
+  }
+  const test::WorldScan s = test::subsample(test::kittiWorldScan(3), 4);
+  second.insertScan(s.points, s.origin);
+  const unsigned parts = 3;
+  std::size_t total = 0;
+  for (unsigned part = 0; part < parts; ++part) {
+    const auto all = serializeLogOddsByOwner(first, parts);
+    const auto kept = serializeLogOddsByOwner(first, parts, part);
+    for (unsigned k = 0; k < parts; ++k) {
+      if (k == part) {
+        EXPECT_EQ(deserializeLogOdds(kept[k].data(), kept[k].size(), "kept").knownVoxels(), 0u);
+      } else {
+        EXPECT_EQ(kept[k], all[k]);
+      }
+    }
+    const auto second_bytes = serializeLogOddsByOwner(second, parts);
+    LogOddsMap by_buffer(p), in_memory(p);  // the second map's part first, then the first's
+    mergeSerializedLogOdds(by_buffer, second_bytes[part].data(), second_bytes[part].size(), "b");
+    mergeSerializedLogOdds(in_memory, second_bytes[part].data(), second_bytes[part].size(), "b");
+    mergeSerializedLogOdds(by_buffer, all[part].data(), all[part].size(), "a");
+    mergeOwnedBlocks(in_memory, first, part, parts);
+    ASSERT_EQ(in_memory.knownVoxels(), by_buffer.knownVoxels());
+    total += in_memory.knownVoxels();
+    by_buffer.forEachKnown([&](const VoxelKey& k, float l) {
+      const std::optional<float> m = in_memory.logOdds(k);
+      ASSERT_TRUE(m.has_value());
+      EXPECT_EQ(std::memcmp(&*m, &l, sizeof l), 0);
+    });
+  }
+  EXPECT_GT(total, first.knownVoxels());  // the parts together cover both maps
+}
+
 // One voxel: part A misses it five times (its sum passes clamp_min and is clamped there), part
 // B hits it ten times (clamped at clamp_max). One process, A then B, ends at clamp_max; the
 // merge adds the clamped parts: clamp_min + clamp_max.

@@ -17,6 +17,9 @@ expect 2 "--max-points" -- "$MM" octree "$scan" --max-points -5 --min-cell-size 
 expect 2 "--max-points" -- "$MM" octree "$scan" --max-points 1.5 --min-cell-size 1
 expect 2 "--bogus" -- "$MM" grid "$scan" --cell-size 1 --bogus
 expect 2 "--cell-size is required" -- "$MM" grid "$scan"
+for v in -1 1025 1.5 two ""; do
+  expect 2 "--threads" -- "$MM" grid "$scan" --cell-size 1 --threads "$v"
+done
 expect 2 "cell_size must be" -- "$MM" compare "$scan" --config cell_size=0,min_cell_size=1,max_points=3
 expect 2 "unknown key" -- "$MM" compare "$scan" --config cell=1,min_cell_size=1,max_points=3
 expect 2 "max_points must be" -- "$MM" compare "$scan" --config cell_size=1,min_cell_size=1,max_points=-3

@@ -18,6 +18,11 @@ for fmt in ascii binary binary_compressed; do
     "'$MM' info '$tmp/g_$fmt.pcd' --format json | grep -q '\"points\": 1192'"
 done
 check "grid json has the occupied count" grep -q '"occupied_cells": 1192' "$tmp/grid.json"
+for t in 1 3; do
+  check "grid --threads $t: the same cells" "$MM" grid "$scan" --cell-size 0.5 --threads "$t" \
+    --cells "$tmp/cells_t$t.csv" --format json
+  check "grid --threads $t: cells.csv identical" cmp -s "$tmp/cells.csv" "$tmp/cells_t$t.csv"
+done
 check "cells.csv has a header and 1192 rows" test "$(wc -l <"$tmp/cells.csv")" = 1193
 check "cells.csv counts add up to every point" \
   test "$(awk -F, 'NR>1{s+=$4} END{print s}' "$tmp/cells.csv")" = 79149

@@ -13,11 +13,10 @@ namespace {
 /// source-rank order (deterministic sums).
 GridAccumulator ownedCells(const GridAccumulator& local) {
   const int size = worldSize();
-  const std::vector<Bytes> incoming =
-      exchangeBuffers(local.serializeByOwner(static_cast<unsigned>(size)));
+  const Received incoming = exchangeBuffers(local.serializeByOwner(static_cast<unsigned>(size)));
   GridAccumulator owned(local.cellSize());
   for (int k = 0; k < size; ++k) {
-    owned.merge(GridAccumulator::deserialize(incoming[k].data(), incoming[k].size(),
+    owned.merge(GridAccumulator::deserialize(incoming.data(k), incoming.size[k],
                                              "grid cells from rank " + std::to_string(k)));
   }
   return owned;
@@ -58,10 +57,10 @@ GridAccumulator reduceGrid(const GridAccumulator& local) {
   if (size == 1) return local;  // nothing to exchange
   const GridAccumulator owned = ownedCells(local);
   // 3. rank 0 gathers the owners' disjoint cells
-  const std::vector<Bytes> gathered = gatherBuffers(owned.serialize());
+  const Received gathered = gatherBuffers(owned.serialize());
   GridAccumulator all(local.cellSize());
-  for (std::size_t k = 0; k < gathered.size(); ++k) {
-    all.merge(GridAccumulator::deserialize(gathered[k].data(), gathered[k].size(),
+  for (std::size_t k = 0; k < gathered.ranks(); ++k) {
+    all.merge(GridAccumulator::deserialize(gathered.data(k), gathered.size[k],
                                            "reduced grid cells of rank " + std::to_string(k)));
   }
   return all;

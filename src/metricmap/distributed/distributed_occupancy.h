@@ -11,6 +11,6 @@ namespace metricmap::distributed {
 /// \brief Collective. Returns on rank 0 the merge of every rank's map; on the other ranks an
 /// empty map with the same parameters.
 /// \throws InputError when a received buffer is corrupt or the ranks' parameters differ
-LogOddsMap reduceLogOdds(const LogOddsMap& local);
+LogOddsMap reduceLogOdds(LogOddsMap local);
 
 }  // namespace metricmap::distributed

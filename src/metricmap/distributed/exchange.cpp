@@ -45,7 +45,17 @@ int checkedCount(std::size_t bytes, const char* what) {
 
 }  // namespace
 
-std::vector<Bytes> exchangeBuffers(const std::vector<Bytes>& outgoing) {
+namespace {
+
+/// The views of a receive buffer laid out by MPI's counts and displacements.
+void setViews(Received& r, const std::vector<int>& counts, const std::vector<int>& displs) {
+  r.offset.assign(displs.begin(), displs.end());
+  r.size.assign(counts.begin(), counts.end());
+}
+
+}  // namespace
+
+Received exchangeBuffers(const std::vector<Bytes>& outgoing) {
   const int size = worldSize();
   if (static_cast<int>(outgoing.size()) != size)
     throw std::invalid_argument("exchangeBuffers: one buffer per rank is needed");
@@ -57,36 +67,30 @@ std::vector<Bytes> exchangeBuffers(const std::vector<Bytes>& outgoing) {
   Bytes send(static_cast<std::size_t>(send_displs.back()) + send_counts.back());
   for (int k = 0; k < size; ++k)
     std::copy(outgoing[k].begin(), outgoing[k].end(), send.begin() + send_displs[k]);
-  Bytes recv(static_cast<std::size_t>(recv_displs.back()) + recv_counts.back());
-  MPI_Alltoallv(send.data(), send_counts.data(), send_displs.data(), MPI_BYTE, recv.data(),
+  Received in;
+  in.bytes.resize(static_cast<std::size_t>(recv_displs.back()) + recv_counts.back());
+  MPI_Alltoallv(send.data(), send_counts.data(), send_displs.data(), MPI_BYTE, in.bytes.data(),
                 recv_counts.data(), recv_displs.data(), MPI_BYTE, MPI_COMM_WORLD);
-  std::vector<Bytes> incoming(size);
-  for (int k = 0; k < size; ++k)
-    incoming[k].assign(recv.begin() + recv_displs[k],
-                       recv.begin() + recv_displs[k] + recv_counts[k]);
-  return incoming;
+  setViews(in, recv_counts, recv_displs);
+  return in;
 }
 
-std::vector<Bytes> gatherBuffers(const Bytes& mine) {
+Received gatherBuffers(const Bytes& mine) {
   const int size = worldSize();
   const int rank = worldRank();
   const int count = checkedCount(mine.size(), "gather");
   std::vector<int> counts(rank == 0 ? size : 0);
   MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
   std::vector<int> displs;
-  Bytes all;
+  Received all;
   if (rank == 0) {
     displs = displacements(counts, "gather");
-    all.resize(static_cast<std::size_t>(displs.back()) + counts.back());
+    all.bytes.resize(static_cast<std::size_t>(displs.back()) + counts.back());
   }
-  MPI_Gatherv(mine.data(), count, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, 0,
-              MPI_COMM_WORLD);
-  std::vector<Bytes> out;
-  if (rank != 0) return out;
-  out.resize(size);
-  for (int k = 0; k < size; ++k)
-    out[k].assign(all.begin() + displs[k], all.begin() + displs[k] + counts[k]);
-  return out;
+  MPI_Gatherv(mine.data(), count, MPI_BYTE, all.bytes.data(), counts.data(), displs.data(),
+              MPI_BYTE, 0, MPI_COMM_WORLD);
+  if (rank == 0) setViews(all, counts, displs);
+  return all;
 }
 
 void sumToRoot(std::vector<std::uint64_t>& values) {

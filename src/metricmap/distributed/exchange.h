@@ -15,15 +15,24 @@ using Bytes = std::vector<std::uint8_t>;
 int worldRank();
 int worldSize();
 
+/// \brief What a collective delivered: one receive buffer, rank k's bytes at
+/// [data(k), data(k) + size[k]) (views, not copies).
+struct Received {
+  Bytes bytes;
+  std::vector<std::size_t> offset, size;  ///< per source rank; empty where nothing is received
+  const std::uint8_t* data(std::size_t k) const { return bytes.data() + offset[k]; }
+  std::size_t ranks() const { return size.size(); }
+};
+
 /// \brief MPI_Alltoallv: `outgoing[k]` goes to rank k; returns what each rank sent to this one
 /// (index = source rank).
 /// \throws CapacityError when a rank would send or receive 2 GiB or more in one exchange (MPI's
 /// int counts): use more ranks
-std::vector<Bytes> exchangeBuffers(const std::vector<Bytes>& outgoing);
+Received exchangeBuffers(const std::vector<Bytes>& outgoing);
 
-/// \brief MPI_Gatherv to rank 0: there, one buffer per rank (index = rank); elsewhere empty.
+/// \brief MPI_Gatherv to rank 0: there, one buffer per rank (index = rank); elsewhere none.
 /// \throws CapacityError when rank 0 would receive 2 GiB or more
-std::vector<Bytes> gatherBuffers(const Bytes& mine);
+Received gatherBuffers(const Bytes& mine);
 
 /// \brief Element-wise sum over the ranks, result on rank 0 (others keep theirs).
 void sumToRoot(std::vector<std::uint64_t>& values);

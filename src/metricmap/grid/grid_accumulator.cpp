@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -35,10 +36,31 @@ void putHeader(ByteWriter& w, float cell, std::uint64_t input, std::uint64_t ski
   w.put(cells);
 }
 
-void putCell(ByteWriter& w, const CellSum& c) {
-  for (std::int64_t i : c.index) w.put(i);
-  w.put(c.count);
-  for (double s : c.sum) w.put(s);
+/// Writes one cell record (kCellBytes) at `dst`; returns the end.
+std::uint8_t* putCell(std::uint8_t* dst, const CellSum& c) {
+  std::memcpy(dst, c.index.data(), 24);
+  std::memcpy(dst + 24, &c.count, 8);
+  std::memcpy(dst + 32, c.sum.data(), 24);
+  return dst + kCellBytes;
+}
+
+/// Merges the sorted runs of `cells` that start at `starts` (ascending, starts[0] = 0), pairwise
+/// and stably: the order of equal cells is their order in `cells`, as a stable sort gives.
+void mergeRuns(std::vector<CellSum>& cells, std::vector<std::size_t> starts) {
+  starts.push_back(cells.size());
+  while (starts.size() > 2) {
+    std::vector<std::size_t> next;
+    for (std::size_t r = 0; r + 1 < starts.size(); r += 2) {
+      next.push_back(starts[r]);
+      if (r + 2 < starts.size()) {
+        std::inplace_merge(cells.begin() + static_cast<std::ptrdiff_t>(starts[r]),
+                           cells.begin() + static_cast<std::ptrdiff_t>(starts[r + 1]),
+                           cells.begin() + static_cast<std::ptrdiff_t>(starts[r + 2]), linearLess);
+      }
+    }
+    next.push_back(cells.size());
+    starts.swap(next);
+  }
 }
 
 }  // namespace
@@ -81,7 +103,17 @@ void GridAccumulator::merge(const GridAccumulator& other) {
 
 void GridAccumulator::normalize() const {
   if (sorted_) return;
-  std::stable_sort(cells_.begin(), cells_.end(), linearLess);
+  // Parts arrive sorted (a build's cells, a buffer's): merge their runs; sort anything else.
+  constexpr std::size_t kMaxRuns = 64;
+  std::vector<std::size_t> starts{0};
+  for (std::size_t i = 1; i < cells_.size() && starts.size() <= kMaxRuns; ++i) {
+    if (linearLess(cells_[i], cells_[i - 1])) starts.push_back(i);
+  }
+  if (starts.size() <= kMaxRuns) {
+    mergeRuns(cells_, starts);
+  } else {
+    std::stable_sort(cells_.begin(), cells_.end(), linearLess);
+  }
   std::size_t out = 0;
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     if (out > 0 && cells_[out - 1].index == cells_[i].index) {
@@ -112,7 +144,9 @@ std::vector<std::uint8_t> GridAccumulator::serialize() const {
   out.reserve(40 + cells_.size() * kCellBytes);
   ByteWriter w(out);
   putHeader(w, cell_size_, input_points_, skipped_points_, cells_.size());
-  for (const CellSum& c : cells_) putCell(w, c);
+  out.resize(out.size() + cells_.size() * kCellBytes);
+  std::uint8_t* dst = out.data() + out.size() - cells_.size() * kCellBytes;
+  for (const CellSum& c : cells_) dst = putCell(dst, c);
   return out;
 }
 
@@ -132,10 +166,13 @@ std::vector<std::vector<std::uint8_t>> GridAccumulator::serializeByOwner(unsigne
     ByteWriter w(out[p]);
     putHeader(w, cell_size_, p == 0 ? input_points_ : 0, p == 0 ? skipped_points_ : 0, counts[p]);
   }
-  for (std::size_t i = 0; i < cells_.size(); ++i) {
-    ByteWriter w(out[owner[i]]);
-    putCell(w, cells_[i]);
+  std::vector<std::uint8_t*> dst(parts);
+  for (unsigned p = 0; p < parts; ++p) {
+    const std::size_t at = out[p].size();
+    out[p].resize(at + counts[p] * kCellBytes);
+    dst[p] = out[p].data() + at;
   }
+  for (std::size_t i = 0; i < cells_.size(); ++i) dst[owner[i]] = putCell(dst[owner[i]], cells_[i]);
   return out;
 }
 

@@ -14,6 +14,7 @@ namespace {
 constexpr std::uint32_t kMagic = 0x4F4C'4D4Du;  // "MMLO" read as little-endian bytes
 constexpr std::uint32_t kVersion = 1;
 constexpr std::size_t kBlockHeadBytes = 8 + 8 * detail::kBlockWords;  // key, known bits
+constexpr std::size_t kHeaderBytes = 4 + 4 + 7 * 8 + 8;  // magic, version, parameters, blocks
 
 void putHeader(ByteWriter& w, const LogOddsParams& p, std::uint64_t voxels) {
   w.put(kMagic);
@@ -24,6 +25,13 @@ void putHeader(ByteWriter& w, const LogOddsParams& p, std::uint64_t voxels) {
   w.put(voxels);
 }
 
+/// The part of `parts` that owns a block (tiles are whole blocks).
+unsigned blockOwner(std::uint64_t key, unsigned parts) {
+  const VoxelKey b = unpackVoxelKey(key);  // block coordinates: its tile is its voxels' tile
+  return tileOwner(b.x * detail::kBlockEdge, b.y * detail::kBlockEdge, b.z * detail::kBlockEdge,
+                   parts);
+}
+
 }  // namespace
 
 std::vector<std::uint8_t> serializeLogOdds(const LogOddsMap& map) {
@@ -31,7 +39,7 @@ std::vector<std::uint8_t> serializeLogOdds(const LogOddsMap& map) {
 }
 
 std::vector<std::vector<std::uint8_t>> serializeLogOddsByOwner(const LogOddsMap& map,
-                                                               unsigned parts) {
+                                                               unsigned parts, unsigned keep) {
   if (parts == 0) throw std::invalid_argument("serializeLogOddsByOwner: zero parts");
   std::vector<std::vector<std::uint8_t>> out(parts);
   std::vector<std::uint64_t> counts(parts, 0);
@@ -40,9 +48,8 @@ std::vector<std::vector<std::uint8_t>> serializeLogOddsByOwner(const LogOddsMap&
     putHeader(w, map.params(), 0);  // block count patched below
   }
   map.forEachBlock([&](std::uint64_t key, const std::uint64_t* known, const float* values) {
-    const VoxelKey b = unpackVoxelKey(key);  // block coordinates: its tile is its voxels' tile
-    const unsigned owner = tileOwner(b.x * detail::kBlockEdge, b.y * detail::kBlockEdge,
-                                     b.z * detail::kBlockEdge, parts);
+    const unsigned owner = blockOwner(key, parts);
+    if (owner == keep) return;
     std::vector<std::uint8_t>& o = out[owner];
     const std::size_t at = o.size();
     int n = 0;
@@ -61,8 +68,21 @@ std::vector<std::vector<std::uint8_t>> serializeLogOddsByOwner(const LogOddsMap&
     ++counts[owner];
   });
   for (unsigned p = 0; p < parts; ++p)
-    std::memcpy(out[p].data() + 64, &counts[p], 8);  // after magic, version, 7 parameters
+    std::memcpy(out[p].data() + kHeaderBytes - 8, &counts[p], 8);
   return out;
+}
+
+void mergeOwnedBlocks(LogOddsMap& into, const LogOddsMap& from, unsigned part, unsigned parts) {
+  float packed[detail::kBlockWords * 64];
+  from.forEachBlock([&](std::uint64_t key, const std::uint64_t* known, const float* values) {
+    if (blockOwner(key, parts) != part) return;
+    float* dst = packed;
+    for (int w = 0; w < detail::kBlockWords; ++w) {
+      for (std::uint64_t bits = known[w]; bits != 0; bits &= bits - 1)
+        *dst++ = values[w * 64 + __builtin_ctzll(bits)];
+    }
+    into.mergeBlock(key, known, packed);
+  });
 }
 
 namespace {

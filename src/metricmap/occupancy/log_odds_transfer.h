@@ -27,9 +27,14 @@ namespace metricmap {
 std::vector<std::uint8_t> serializeLogOdds(const LogOddsMap& map);
 
 /// \brief One buffer per owner: buffer k holds the blocks whose voxels tileOwner() gives to part
-/// k (tiles are whole blocks).
+/// k (tiles are whole blocks). Buffer `keep` (if < parts) holds no block: the caller keeps
+/// that part in memory and merges it with mergeOwnedBlocks.
 std::vector<std::vector<std::uint8_t>> serializeLogOddsByOwner(const LogOddsMap& map,
-                                                               unsigned parts);
+                                                               unsigned parts, unsigned keep = ~0u);
+
+/// \brief Merge into `into` the blocks of `from` that tileOwner() gives to `part` of `parts`,
+/// as merging buffer `part` of serializeLogOddsByOwner(from, parts) would.
+void mergeOwnedBlocks(LogOddsMap& into, const LogOddsMap& from, unsigned part, unsigned parts);
 
 /// \brief Read a buffer written by serializeLogOdds.
 /// \throws InputError (naming `what`) when it is truncated, too long, of another format or
