@@ -6,7 +6,7 @@
 #include <limits>
 #include <sstream>
 
-#include <emmintrin.h>
+#include <immintrin.h>
 
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/detail/fast_floor.h"
@@ -296,6 +296,117 @@ inline void walkPair(const Beam& a, const Beam& b, LinearBits& free) {
   while (rb) rb = stepState(sb, bits);
 }
 
+/// The beams of a scan one at a time for the four-lane walk: marks each end's hit and the
+/// origin's voxel as the pairwise walk does, skips beams that end in the origin's voxel.
+struct BeamFeed {
+  const ScanUpdate::End* next;
+  const ScanUpdate::End* last;
+  const float* o;
+  Key3 ko;
+  double res;
+  LinearBits* free;
+  LinearBits* hits;
+  bool pop(Beam& b) {
+    while (next != last) {
+      const ScanUpdate::End& end = *next++;
+      if (end.hit) hits->set(hits->index(end.k[0], end.k[1], end.k[2]));
+      if (ko.v[0] == end.k[0] && ko.v[1] == end.k[1] && ko.v[2] == end.k[2]) continue;
+      free->set(free->index(ko.v[0], ko.v[1], ko.v[2]));
+      startBeam(o, end.e, ko, end.k, res, b);
+      return true;
+    }
+    return false;
+  }
+};
+
+/// Four beams' walks in the lanes of AVX2 registers (x86-64 with AVX2 only; chosen at run
+/// time). Each lane does walkBeamLinear's arithmetic, operation for operation, in double, so
+/// the voxels are the same; a lane whose beam ends takes the next one. Voxels of lanes that are
+/// done are marked in the spare word `spare` (bit index), which the caller clears.
+__attribute__((target("avx2"))) void walkFeedAvx2(BeamFeed& feed, LinearBits& free,
+                                                   std::int64_t spare) {
+  alignas(32) double tx[4], ty[4], tz[4], dx[4], dy[4], dz[4], len[4];
+  alignas(32) std::int64_t idx[4], eidx[4], ix[4], iy[4], iz[4], mark[4];
+  int active = 0;
+  Beam b;
+  auto* bits = free.bits;
+  const auto load = [&](int l) {  // no intrinsics in here: lambdas do not inherit the target
+    if (!feed.pop(b)) {  // an idle lane: ends at once, marks the spare word
+      tx[l] = ty[l] = tz[l] = dx[l] = dy[l] = dz[l] = 0.0;
+      len[l] = -1.0;
+      idx[l] = eidx[l] = spare;
+      ix[l] = iy[l] = iz[l] = 0;
+      active &= ~(1 << l);
+      return;
+    }
+    double t[7];
+    for (int a = 0; a < 3; ++a) {
+      std::memcpy(&t[a], &b.t[a], 8);
+      std::memcpy(&t[3 + a], &b.dt[a], 8);
+    }
+    std::memcpy(&t[6], &b.length, 8);
+    tx[l] = t[0], ty[l] = t[1], tz[l] = t[2], dx[l] = t[3], dy[l] = t[4], dz[l] = t[5];
+    len[l] = t[6];
+    idx[l] = free.index(b.k[0], b.k[1], b.k[2]);
+    eidx[l] = free.index(b.ke[0], b.ke[1], b.ke[2]);
+    ix[l] = b.step[0];
+    iy[l] = b.step[1] * free.row_bits;
+    iz[l] = b.step[2] * free.slice_bits;
+    active |= 1 << l;
+  };
+  for (int l = 0; l < 4; ++l) load(l);
+  if (active == 0) return;
+  const __m256d ones = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+  for (;;) {
+    __m256d vtx = _mm256_load_pd(tx), vty = _mm256_load_pd(ty), vtz = _mm256_load_pd(tz);
+    const __m256d vdx = _mm256_load_pd(dx), vdy = _mm256_load_pd(dy), vdz = _mm256_load_pd(dz);
+    const __m256d vlen = _mm256_load_pd(len);
+    __m256i vidx = _mm256_load_si256(reinterpret_cast<const __m256i*>(idx));
+    const __m256i veidx = _mm256_load_si256(reinterpret_cast<const __m256i*>(eidx));
+    const __m256i vix = _mm256_load_si256(reinterpret_cast<const __m256i*>(ix));
+    const __m256i viy = _mm256_load_si256(reinterpret_cast<const __m256i*>(iy));
+    const __m256i viz = _mm256_load_si256(reinterpret_cast<const __m256i*>(iz));
+    const __m256i vspare = _mm256_set1_epi64x(spare);
+    int done = 0;
+    while (done == 0) {
+      // OctoMap's choice, ties included: x if tx < ty and tx < tz, else y if ty < tz, else z
+      const __m256d x_lt_y = _mm256_cmp_pd(vtx, vty, _CMP_LT_OS);
+      const __m256d mx = _mm256_and_pd(x_lt_y, _mm256_cmp_pd(vtx, vtz, _CMP_LT_OS));
+      const __m256d my = _mm256_andnot_pd(x_lt_y, _mm256_cmp_pd(vty, vtz, _CMP_LT_OS));
+      const __m256d mz = _mm256_andnot_pd(_mm256_or_pd(mx, my), ones);
+      vtx = _mm256_add_pd(vtx, _mm256_and_pd(mx, vdx));
+      vty = _mm256_add_pd(vty, _mm256_and_pd(my, vdy));
+      vtz = _mm256_add_pd(vtz, _mm256_and_pd(mz, vdz));
+      vidx = _mm256_add_epi64(
+          vidx, _mm256_add_epi64(
+                    _mm256_add_epi64(_mm256_and_si256(vix, _mm256_castpd_si256(mx)),
+                                     _mm256_and_si256(viy, _mm256_castpd_si256(my))),
+                    _mm256_and_si256(viz, _mm256_castpd_si256(mz))));
+      // done: the end voxel reached, or the next crossing beyond the end (OctoMap's guard)
+      const __m256i end = _mm256_cmpeq_epi64(vidx, veidx);
+      const __m256d beyond =
+          _mm256_cmp_pd(_mm256_min_pd(_mm256_min_pd(vtx, vty), vtz), vlen, _CMP_GT_OQ);
+      const __m256i stop = _mm256_or_si256(end, _mm256_castpd_si256(beyond));
+      _mm256_store_si256(reinterpret_cast<__m256i*>(mark), _mm256_blendv_epi8(vidx, vspare, stop));
+      for (int l = 0; l < 4; ++l) bits[mark[l] >> 6] |= std::uint64_t{1} << (mark[l] & 63);
+      done = _mm256_movemask_pd(_mm256_castsi256_pd(stop)) & active;
+    }
+    _mm256_store_pd(tx, vtx);
+    _mm256_store_pd(ty, vty);
+    _mm256_store_pd(tz, vtz);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(idx), vidx);
+    for (int l = 0; l < 4; ++l) {
+      if (done >> l & 1) load(l);
+    }
+    if (active == 0) return;
+  }
+}
+
+bool haveAvx2() {
+  static const bool yes = __builtin_cpu_supports("avx2") != 0;
+  return yes;
+}
+
 /// Moves the set bits of a LinearBits box into the scan's blocks (free or hit words), zeroing
 /// them: each byte of a word is one block row of 8 voxels.
 void harvest(LinearBits& box, std::int64_t words_per_row, std::int64_t rows_y, std::int64_t rows_z,
@@ -403,24 +514,31 @@ RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
   Marker marker(out, in.max_blocks, in.resolution);
   if (words_per_row * ny * nz <= kDenseWordLimit) {
     const auto words = static_cast<std::size_t>(words_per_row * ny * nz);
-    if (out.dense.size() < 2 * words) out.dense.assign(2 * words, 0);
+    // free bits, hit bits, and one spare word for the four-lane walk's idle lanes
+    if (out.dense.size() < 2 * words + 1) out.dense.assign(2 * words + 1, 0);
     LinearBits free{out.dense.data(),       x0, lo[1], lo[2], words_per_row * 64,
                     words_per_row * 64 * ny};
     LinearBits hits = free;
     hits.bits = out.dense.data() + words;
-    Beam beams[2];
-    int pending = 0;
-    for (const ScanUpdate::End& end : out.ends) {
-      if (end.hit) hits.set(hits.index(end.k[0], end.k[1], end.k[2]));
-      if (ko.v[0] == end.k[0] && ko.v[1] == end.k[1] && ko.v[2] == end.k[2]) continue;
-      free.set(free.index(ko.v[0], ko.v[1], ko.v[2]));
-      startBeam(o, end.e, ko, end.k, res, beams[pending++]);
-      if (pending == 2) {
-        walkPair(beams[0], beams[1], free);
-        pending = 0;
+    if (in.simd && haveAvx2()) {
+      BeamFeed feed{out.ends.data(), out.ends.data() + out.ends.size(), o, ko, res, &free, &hits};
+      walkFeedAvx2(feed, free, static_cast<std::int64_t>(2 * words) * 64);
+      out.dense[2 * words] = 0;
+    } else {
+      Beam beams[2];
+      int pending = 0;
+      for (const ScanUpdate::End& end : out.ends) {
+        if (end.hit) hits.set(hits.index(end.k[0], end.k[1], end.k[2]));
+        if (ko.v[0] == end.k[0] && ko.v[1] == end.k[1] && ko.v[2] == end.k[2]) continue;
+        free.set(free.index(ko.v[0], ko.v[1], ko.v[2]));
+        startBeam(o, end.e, ko, end.k, res, beams[pending++]);
+        if (pending == 2) {
+          walkPair(beams[0], beams[1], free);
+          pending = 0;
+        }
       }
+      if (pending == 1) walkBeamLinear(beams[0], free);
     }
-    if (pending == 1) walkBeamLinear(beams[0], free);
     harvest(free, words_per_row, ny, nz, false, marker);
     harvest(hits, words_per_row, ny, nz, true, marker);
   } else {

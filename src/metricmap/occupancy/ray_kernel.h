@@ -22,6 +22,9 @@ struct RayCastInput {
   /// Most distinct blocks the scan may touch (the memory budget's share): one more throws
   /// CapacityError naming the resolution and the budget.
   std::size_t max_blocks = static_cast<std::size_t>(-1);
+  /// Walk four beams at a time in AVX2 registers where the CPU has AVX2 (the same voxels as
+  /// the two-beam SSE2 walk, which `false` forces: for tests).
+  bool simd = true;
 };
 
 /// \brief Beams cast and skipped.
