@@ -43,15 +43,14 @@ TEST(RayKernel, FourLaneWalkMarksTheSameVoxelsAsTheTwoBeamWalk) {
   for (std::size_t frame : {0u, 3u}) {
     test::WorldScan scan = test::kittiWorldScan(frame);
     // a few beams that end in the origin's voxel, or exactly on voxel faces
-    for (const Eigen::Vector3f& d : {Eigen::Vector3f(0.01f, 0.01f, 0.0f),
-                                    Eigen::Vector3f(2.0f, 0.0f, 0.0f),
-                                    Eigen::Vector3f(0.0f, -4.0f, 0.0f),
-                                    Eigen::Vector3f(0.0f, 0.0f, 1.0f)}) {
+    for (const Eigen::Vector3f& d :
+         {Eigen::Vector3f(0.01f, 0.01f, 0.0f), Eigen::Vector3f(2.0f, 0.0f, 0.0f),
+          Eigen::Vector3f(0.0f, -4.0f, 0.0f), Eigen::Vector3f(0.0f, 0.0f, 1.0f)}) {
       const Eigen::Vector3f p = scan.origin + d;
       scan.points.push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
     }
-    for (const auto& [res, range] : {std::pair<double, double>{0.2, 50.0}, {0.1, 50.0},
-                                     {0.35, inf}, {0.05, 10.0}}) {
+    for (const auto& [res, range] :
+         {std::pair<double, double>{0.2, 50.0}, {0.1, 50.0}, {0.35, inf}, {0.05, 10.0}}) {
       SCOPED_TRACE(testing::Message() << "frame " << frame << " res " << res << " range " << range);
       detail::RayCastCounts a, b;
       const auto simd = cast(scan, res, range, true, a);
@@ -64,7 +63,8 @@ TEST(RayKernel, FourLaneWalkMarksTheSameVoxelsAsTheTwoBeamWalk) {
         const auto it = simd.find(key);
         ASSERT_NE(it, simd.end());
         differ += it->second != words ? 1 : 0;
-        for (std::uint64_t w : words.first) free_bits += static_cast<std::size_t>(__builtin_popcountll(w));
+        for (std::uint64_t w : words.first)
+          free_bits += static_cast<std::size_t>(__builtin_popcountll(w));
       }
       EXPECT_EQ(differ, 0u);
       EXPECT_GT(free_bits, 10000u);  // a real walk
@@ -81,8 +81,8 @@ TEST(RayKernel, FourLaneWalkBreaksTiesAsTheTwoBeamWalk) {
   for (int a = -6; a <= 6; ++a) {
     for (int b = -6; b <= 6; ++b) {
       for (int c = -6; c <= 6; ++c) {
-        const bool tie = std::abs(a) == std::abs(b) || std::abs(b) == std::abs(c) ||
-                         std::abs(a) == std::abs(c);
+        const bool tie =
+            std::abs(a) == std::abs(b) || std::abs(b) == std::abs(c) || std::abs(a) == std::abs(c);
         if (!tie) continue;
         scan.points.push_back(pcl::PointXYZ(0.1f + 0.2f * static_cast<float>(a * 5),
                                             0.1f + 0.2f * static_cast<float>(b * 5),

@@ -67,8 +67,7 @@ std::vector<std::vector<std::uint8_t>> serializeLogOddsByOwner(const LogOddsMap&
     }
     ++counts[owner];
   });
-  for (unsigned p = 0; p < parts; ++p)
-    std::memcpy(out[p].data() + kHeaderBytes - 8, &counts[p], 8);
+  for (unsigned p = 0; p < parts; ++p) std::memcpy(out[p].data() + kHeaderBytes - 8, &counts[p], 8);
   return out;
 }
 

@@ -324,14 +324,14 @@ struct BeamFeed {
 /// the voxels are the same; a lane whose beam ends takes the next one. Voxels of lanes that are
 /// done are marked in the spare word `spare` (bit index), which the caller clears.
 __attribute__((target("avx2"))) void walkFeedAvx2(BeamFeed& feed, LinearBits& free,
-                                                   std::int64_t spare) {
+                                                  std::int64_t spare) {
   alignas(32) double tx[4], ty[4], tz[4], dx[4], dy[4], dz[4], len[4];
   alignas(32) std::int64_t idx[4], eidx[4], ix[4], iy[4], iz[4], mark[4];
   int active = 0;
   Beam b;
   auto* bits = free.bits;
   const auto load = [&](int l) {  // no intrinsics in here: lambdas do not inherit the target
-    if (!feed.pop(b)) {  // an idle lane: ends at once, marks the spare word
+    if (!feed.pop(b)) {           // an idle lane: ends at once, marks the spare word
       tx[l] = ty[l] = tz[l] = dx[l] = dy[l] = dz[l] = 0.0;
       len[l] = -1.0;
       idx[l] = eidx[l] = spare;
@@ -378,10 +378,9 @@ __attribute__((target("avx2"))) void walkFeedAvx2(BeamFeed& feed, LinearBits& fr
       vty = _mm256_add_pd(vty, _mm256_and_pd(my, vdy));
       vtz = _mm256_add_pd(vtz, _mm256_and_pd(mz, vdz));
       vidx = _mm256_add_epi64(
-          vidx, _mm256_add_epi64(
-                    _mm256_add_epi64(_mm256_and_si256(vix, _mm256_castpd_si256(mx)),
-                                     _mm256_and_si256(viy, _mm256_castpd_si256(my))),
-                    _mm256_and_si256(viz, _mm256_castpd_si256(mz))));
+          vidx, _mm256_add_epi64(_mm256_add_epi64(_mm256_and_si256(vix, _mm256_castpd_si256(mx)),
+                                                  _mm256_and_si256(viy, _mm256_castpd_si256(my))),
+                                 _mm256_and_si256(viz, _mm256_castpd_si256(mz))));
       // done: the end voxel reached, or the next crossing beyond the end (OctoMap's guard)
       const __m256i end = _mm256_cmpeq_epi64(vidx, veidx);
       const __m256d beyond =
