@@ -174,6 +174,11 @@ void addOdometryCommand(CLI::App& app) {
   sub->add_option("--voxel-size", o->config.voxel_size, "Local map voxel (m)")
       ->check(kFinitePositive)
       ->capture_default_str();
+  sub->add_option("--threads", o->config.threads,
+                  "Threads for the scan-to-map pairing (0: all hardware threads); the poses do "
+                  "not depend on it")
+      ->check(CLI::Range(0u, 1024u))
+      ->capture_default_str();
   addFormatOption(*sub, o->format, {"table", "json"});
   sub->callback([o] {
     if (!(o->config.min_range < o->config.max_range)) {

@@ -16,6 +16,9 @@ expect 2 "--frames" -- "$MM" odometry "$kr"
 expect 2 "--frames" -- "$MM" odometry "$kr" --frames 3-1
 expect 2 "--max-range" -- "$MM" odometry "$kr" --frames 0-1 --max-range nan
 expect 2 "--min-range" -- "$MM" odometry "$kr" --frames 0-1 --min-range 200
+for v in -1 1025 1.5 ""; do
+  expect 2 "--threads" -- "$MM" odometry "$kr" --frames 0-1 --threads "$v"
+done
 expect 1 "000003.bin: missing frame" -- "$MM" odometry "$kr" --frames 0-5 --out-poses "$out"
 check "no pose file after a missing frame" test ! -e "$out"
 : >"$kr/sequences/00/velodyne/000003.bin"
@@ -35,6 +38,11 @@ check "runs without a pose file" test $? -eq 0
 check "three pose lines of 12 numbers" \
   test "$(awk 'NF == 12' "$out" | wc -l)" -eq 3
 check "json has no pose-file comparison" grep -q '"pose_file": null' "$tmp/run.json"
+for t in 1 3; do
+  check "--threads $t runs" "$MM" odometry "$kr" --frames 0-2 --out-poses "$tmp/p$t.txt" --threads "$t"
+done
+check "the same poses for 1 and 3 threads" cmp -s "$tmp/p1.txt" "$tmp/p3.txt"
+check "and for the default" cmp -s "$out" "$tmp/p1.txt"
 check "about 0.7 m per frame" python3 -c "
 import json; j = json.load(open('$tmp/run.json'))
 s = [f['step'] for f in j['frames'][1:]]
