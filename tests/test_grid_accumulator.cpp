@@ -144,6 +144,21 @@ TEST(GridAccumulator, PartsReduceInTheOrderTheyWereAdded) {
   }
 }
 
+// A buffer that holds its last cell twice (in sorted order) is combined, not taken as two cells.
+TEST(GridAccumulator, RepeatedCellInABufferIsCombined) {
+  const Cloud::Ptr scan = load(dataPath("pcl_test_pcd/bunny.pcd"));
+  GridAccumulator acc(0.01f);
+  acc.add(worldGrid(scan, 0.01f), scan->size());
+  std::vector<std::uint8_t> bytes = acc.serialize();
+  const std::size_t n = acc.cellCount();
+  bytes.insert(bytes.end(), bytes.end() - 56, bytes.end());  // the last cell again
+  const std::uint64_t twice = n + 1;
+  std::memcpy(bytes.data() + 32, &twice, 8);  // the header's cell count
+  const GridAccumulator back = GridAccumulator::deserialize(bytes.data(), bytes.size(), "b");
+  ASSERT_EQ(back.cellCount(), n);
+  EXPECT_EQ(back.cells().back().count, 2 * acc.cells().back().count);
+}
+
 // The distributed exchange in one process: every part sends each owner its cells, each owner
 // reduces, the owners' results are gathered.
 TEST(GridAccumulator, SplitByOwnerThenGatheredEqualsTheWholeGrid) {

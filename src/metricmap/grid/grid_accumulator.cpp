@@ -207,7 +207,11 @@ GridAccumulator GridAccumulator::deserialize(const std::uint8_t* data, std::size
       if (!std::isfinite(s)) r.fail("a non-finite cell sum");
     }
   }
-  acc.sorted_ = std::is_sorted(acc.cells_.begin(), acc.cells_.end(), linearLess);
+  // sorted and without repeated cells (a buffer may hold a cell twice: normalize combines it)
+  acc.sorted_ = std::adjacent_find(acc.cells_.begin(), acc.cells_.end(),
+                                   [](const CellSum& a, const CellSum& b) {
+                                     return !linearLess(a, b);
+                                   }) == acc.cells_.end();
   return acc;
 }
 

@@ -72,6 +72,8 @@ std::vector<std::vector<std::uint8_t>> serializeLogOddsByOwner(const LogOddsMap&
 }
 
 void mergeOwnedBlocks(LogOddsMap& into, const LogOddsMap& from, unsigned part, unsigned parts) {
+  if (&into == &from)
+    throw std::invalid_argument("mergeOwnedBlocks: cannot merge a map into itself");
   float packed[detail::kBlockWords * 64];
   from.forEachBlock([&](std::uint64_t key, const std::uint64_t* known, const float* values) {
     if (blockOwner(key, parts) != part) return;

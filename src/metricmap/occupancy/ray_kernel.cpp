@@ -538,8 +538,13 @@ RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
       }
       if (pending == 1) walkBeamLinear(beams[0], free);
     }
-    harvest(free, words_per_row, ny, nz, false, marker);
-    harvest(hits, words_per_row, ny, nz, true, marker);
+    try {
+      harvest(free, words_per_row, ny, nz, false, marker);
+      harvest(hits, words_per_row, ny, nz, true, marker);
+    } catch (...) {  // too many blocks: leave the reused bitmap clear for the next scan
+      std::fill(out.dense.begin(), out.dense.begin() + static_cast<std::ptrdiff_t>(2 * words), 0);
+      throw;
+    }
   } else {
     walkAll(o, ko, out, res, marker);
   }

@@ -61,7 +61,9 @@ NormalEquations buildSystem(const std::vector<Eigen::Vector3d>& source, const Vo
                             std::vector<NormalEquations>& blocks) {
   const std::size_t n = source.size(), count = (n + kBlock - 1) / kBlock;
   blocks.assign(count, NormalEquations());
-  const unsigned used = resolveThreads(threads, count, 2);
+  // At least 8 blocks (2 048 points) per thread: each step starts its threads afresh, so on
+  // many cores more threads would cost more than they share.
+  const unsigned used = resolveThreads(threads, count, 8);
   parallelRun(used, [&](unsigned th) {
     const auto range = chunkOf(count, used, th);
     for (std::size_t b = range.first; b < range.second; ++b) {

@@ -37,8 +37,9 @@ class VoxelHashMap {
     const Cell* cells[27];        ///< i = 9 (dx + 1) + 3 (dy + 1) + (dz + 1)
   };
   /// \brief nearest() for a query that may reuse `hood`: the query's own voxel first, then
-  /// the others in index order, skipping (and not looking up) every voxel whose box is farther
-  /// than the best distance so far. The answer is the full scan's: ties go to the lower index.
+  /// outwards one axis at a time, skipping (and not looking up) every slab, row or voxel whose
+  /// nearest face is farther than the best distance so far. The answer is the full scan's: ties go
+  /// to the lower index.
   bool nearestCached(const Eigen::Vector3d& p, double max_distance, Neighbourhood& hood,
                      Eigen::Vector3d& q) const;
 
