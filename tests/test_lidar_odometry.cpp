@@ -146,17 +146,22 @@ TEST(LidarOdometryParts, VoxelMapNearestAgainstBruteForce) {
   for (const auto& kv : per_voxel) expected += std::min(kv.second, 4);
   EXPECT_EQ(map.points(), expected);
   EXPECT_EQ(map.voxels(), per_voxel.size());
-  VoxelHashMap::Neighbourhood hood;
-  for (int i = 0; i < 500; ++i) {
-    const Eigen::Vector3d q(u(rng), u(rng), u(rng) * 0.2);
+  // The plain reference: the first held point at the smallest distance.
+  auto bruteNearest = [&held](const Eigen::Vector3d& q, Eigen::Vector3d& arg) {
     double best = 1e9;
-    Eigen::Vector3d arg;
     for (const auto& h : held) {
       if ((h - q).norm() < best) {
         best = (h - q).norm();
         arg = h;
       }
     }
+    return best;
+  };
+  VoxelHashMap::Neighbourhood hood;
+  for (int i = 0; i < 500; ++i) {
+    const Eigen::Vector3d q(u(rng), u(rng), u(rng) * 0.2);
+    Eigen::Vector3d arg;
+    const double best = bruteNearest(q, arg);
     Eigen::Vector3d got;
     // Within one voxel the 27-voxel search is exact.
     const bool found = map.nearest(q, 0.99, got);
@@ -168,14 +173,8 @@ TEST(LidarOdometryParts, VoxelMapNearestAgainstBruteForce) {
     // reuses it between steps: the same answers.
     for (int j = 0; j < 4; ++j) {
       const Eigen::Vector3d qj = q + Eigen::Vector3d(0.3 * j, -0.2 * j, 0.05 * j);
-      double best_j = 1e9;
       Eigen::Vector3d arg_j;
-      for (const auto& h : held) {
-        if ((h - qj).norm() < best_j) {
-          best_j = (h - qj).norm();
-          arg_j = h;
-        }
-      }
+      const double best_j = bruteNearest(qj, arg_j);
       Eigen::Vector3d got_j;
       const bool found_j = map.nearestCached(qj, 0.99, hood, got_j);
       EXPECT_EQ(found_j, best_j < 0.99);
