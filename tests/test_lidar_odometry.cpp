@@ -4,6 +4,7 @@
 // references.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <set>
 #include <tuple>
@@ -188,6 +189,106 @@ TEST(LidarOdometryParts, VoxelMapNearestAgainstBruteForce) {
   EXPECT_LT(map.points(), expected);
   EXPECT_THROW(VoxelHashMap(0.0, 4), std::invalid_argument);
   EXPECT_THROW(VoxelHashMap(1.0, 0), std::invalid_argument);
+}
+
+TEST(LidarOdometryParts, VoxelMapAfterRemovalAgainstBruteForce) {
+  // Voxels dropped from the middle of the numbering, then more added: every query still finds
+  // what a search over the held points finds, and each voxel number holds its answer.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-20.0, 20.0);
+  VoxelHashMap map(1.0, 3);
+  auto addRandom = [&](int n) {
+    Points pts(static_cast<std::size_t>(n));
+    for (auto& p : pts) p = Eigen::Vector3d(u(rng), u(rng), 0.1 * u(rng));
+    map.add(pts);
+  };
+  addRandom(8000);
+  const std::size_t before = map.voxels();
+  map.removeFar(Eigen::Vector3d(5.0, 0.0, 0.0), 9.0);
+  EXPECT_LT(map.voxels(), before);
+  addRandom(3000);
+  const Points held = map.cloud();
+  EXPECT_EQ(held.size(), map.points());
+  VoxelHashMap::Neighbourhood hood;
+  for (int i = 0; i < 2000; ++i) {
+    const Eigen::Vector3d q(u(rng), u(rng), 0.1 * u(rng));
+    double best = 0.99;
+    const Eigen::Vector3d* arg = nullptr;
+    for (const auto& h : held) {
+      if ((h - q).norm() < best) {
+        best = (h - q).norm();
+        arg = &h;
+      }
+    }
+    Eigen::Vector3d got;
+    std::int32_t v = -1;
+    const bool found = map.nearestCached(q, 0.99, hood, got, &v);
+    ASSERT_EQ(found, arg != nullptr) << i;
+    if (!found) continue;
+    EXPECT_EQ(got, *arg);
+    ASSERT_GE(v, 0);
+    const Eigen::Vector3d* begin = map.voxelBegin(v);
+    EXPECT_NE(std::find(begin, begin + map.voxelSize(v), got), begin + map.voxelSize(v));
+    EXPECT_EQ(map.voxelOfPoint(got), v);
+  }
+  map.clear();
+  EXPECT_TRUE(map.empty());
+  EXPECT_EQ(map.points(), 0u);
+  Eigen::Vector3d got;
+  EXPECT_FALSE(map.nearest(Eigen::Vector3d::Zero(), 10.0, got));
+  EXPECT_THROW(VoxelHashMap(1.0, VoxelHashMap::kMaxPointsPerVoxel + 1), std::invalid_argument);
+}
+
+TEST(LidarOdometryParts, DownsampleInRangeIsTheWindowThenTheDownsampling) {
+  // The plain reference: copy the finite points within the window, downsample the copy, map
+  // the kept indices back. Both input forms (double vectors, a PCL cloud) must give it.
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-60.0, 60.0);
+  Cloud cloud;
+  for (int i = 0; i < 30000; ++i) {
+    pcl::PointXYZ p(static_cast<float>(u(rng)), static_cast<float>(u(rng)),
+                    static_cast<float>(0.05 * u(rng)));
+    if (i % 97 == 0) p.x = std::numeric_limits<float>::quiet_NaN();
+    if (i % 89 == 0) p.z = std::numeric_limits<float>::infinity();
+    cloud.push_back(p);
+    if (i % 3 == 0) cloud.push_back(p);  // runs of repeated points, as scans have
+  }
+  const Points pts = toPoints3d(cloud);
+  const double r_min = 3.0, r_max = 50.0;
+  Points window;
+  std::vector<int> window_index;
+  std::size_t finite = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (!pts[i].allFinite()) continue;
+    ++finite;
+    const double r = pts[i].norm();
+    if (r < r_min || r > r_max) continue;
+    window.push_back(pts[i]);
+    window_index.push_back(static_cast<int>(i));
+  }
+  for (const double voxel : {0.5, 1.5}) {
+    std::vector<int> ref_kept;
+    const Points ref = voxelDownsample(window, voxel, &ref_kept);
+    for (int& k : ref_kept) k = window_index[static_cast<std::size_t>(k)];
+    Points out{{1, 2, 3}};  // cleared first
+    std::vector<int> kept{42};
+    const RangeWindowCounts a = downsampleInRange(pts, r_min, r_max, voxel, out, &kept);
+    EXPECT_EQ(out, ref);
+    EXPECT_EQ(kept, ref_kept);
+    EXPECT_EQ(a.finite, finite);
+    EXPECT_EQ(a.in_range, window.size());
+    Points out_cloud;
+    std::vector<int> kept_cloud;
+    const RangeWindowCounts b =
+        downsampleInRange(cloud, r_min, r_max, voxel, out_cloud, &kept_cloud);
+    EXPECT_EQ(out_cloud, ref);
+    EXPECT_EQ(kept_cloud, ref_kept);
+    EXPECT_EQ(b.finite, finite);
+    EXPECT_EQ(b.in_range, window.size());
+  }
+  Points out;
+  EXPECT_THROW(downsampleInRange(pts, r_min, r_max, 0.0, out), std::invalid_argument);
+  EXPECT_THROW(voxelDownsample(out, 1.0, out), std::invalid_argument);
 }
 
 TEST(LidarOdometryParts, DownsampleKeepsFirstPointPerVoxel) {

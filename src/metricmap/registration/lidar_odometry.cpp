@@ -79,12 +79,18 @@ std::vector<Eigen::Vector3d> toPoints3d(const pcl::PointCloud<pcl::PointXYZ>& sc
 OdometryResult LidarOdometry::registerFrame(const pcl::PointCloud<pcl::PointXYZ>& scan,
                                             const std::vector<double>& times,
                                             const std::string& name) {
-  return registerFrame(toPoints3d(scan), times, name);
+  return registerScan(scan, times, name);
 }
 
 OdometryResult LidarOdometry::registerFrame(const std::vector<Eigen::Vector3d>& points,
                                             const std::vector<double>& times,
                                             const std::string& name) {
+  return registerScan(points, times, name);
+}
+
+template <class Scan>
+OdometryResult LidarOdometry::registerScan(const Scan& points, const std::vector<double>& times,
+                                           const std::string& name) {
   const std::string label = name.empty() ? "frame " + std::to_string(poses_.size()) : name;
   const bool deskew = config_.deskew && poses_.size() >= 2;
   if (config_.deskew && times.size() != points.size()) {
@@ -96,51 +102,40 @@ OdometryResult LidarOdometry::registerFrame(const std::vector<Eigen::Vector3d>& 
   res.points_in = points.size();
   if (points.empty()) throw InputError(label + ": empty scan (no points)");
 
-  // Range window; the times follow their points.
-  std::vector<Eigen::Vector3d> kept;
-  std::vector<double> kept_times;
-  kept.reserve(points.size());
-  std::size_t finite = 0;
-  const double r_min2 = config_.min_range * config_.min_range;
-  const double r_max2 = config_.max_range * config_.max_range;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Vector3d& p = points[i];
-    if (!p.allFinite()) continue;
-    ++finite;
-    const double r2 = p.squaredNorm();
-    if (r2 < r_min2 || r2 > r_max2) continue;
-    kept.push_back(p);
-    if (deskew) kept_times.push_back(times[i]);
-  }
-  if (finite == 0) {
+  // Range window and the first downsampling in one pass; the deskew's times follow the points.
+  const RangeWindowCounts counts =
+      downsampleInRange(points, config_.min_range, config_.max_range, 0.5 * config_.voxel_size,
+                        frame_, deskew ? &first_idx_ : nullptr);
+  if (counts.finite == 0) {
     throw InputError(label + ": no finite point among " + std::to_string(points.size()));
   }
-  if (kept.empty()) {
+  if (counts.in_range == 0) {
     throw InputError(label + ": no point between min_range " + std::to_string(config_.min_range) +
                      " and max_range " + std::to_string(config_.max_range) + " m");
   }
-  if (kept.size() < static_cast<std::size_t>(config_.min_points)) {
-    throw InputError(label + ": " + std::to_string(kept.size()) + " point(s) between min_range " +
-                     std::to_string(config_.min_range) + " and max_range " +
-                     std::to_string(config_.max_range) + " m, at least " +
+  if (counts.in_range < static_cast<std::size_t>(config_.min_points)) {
+    throw InputError(label + ": " + std::to_string(counts.in_range) +
+                     " point(s) between min_range " + std::to_string(config_.min_range) +
+                     " and max_range " + std::to_string(config_.max_range) + " m, at least " +
                      std::to_string(config_.min_points) + " needed to register a frame");
   }
-  res.points_used = kept.size();
+  res.points_used = counts.in_range;
 
   // Motion of the last frame: the constant-velocity model for the prediction and the deskew.
   Eigen::Isometry3d velocity = Eigen::Isometry3d::Identity();
   if (poses_.size() >= 2) {
     velocity.matrix() = poses_[poses_.size() - 2].matrix().inverse() * poses_.back().matrix();
   }
-  std::vector<int> first_idx;
-  std::vector<Eigen::Vector3d> frame =
-      voxelDownsample(kept, 0.5 * config_.voxel_size, deskew ? &first_idx : nullptr);
+  std::vector<Eigen::Vector3d>& frame = frame_;
   if (deskew) {
-    std::vector<double> t(first_idx.size());
-    for (std::size_t i = 0; i < first_idx.size(); ++i) t[i] = kept_times[first_idx[i]];
+    std::vector<double> t(first_idx_.size());
+    for (std::size_t i = 0; i < first_idx_.size(); ++i) {
+      t[i] = times[static_cast<std::size_t>(first_idx_[i])];
+    }
     frame = deskewScan(frame, t, velocity);
   }
-  const std::vector<Eigen::Vector3d> source = voxelDownsample(frame, 1.5 * config_.voxel_size);
+  voxelDownsample(frame, 1.5 * config_.voxel_size, source_);
+  const std::vector<Eigen::Vector3d>& source = source_;
   res.points_source = source.size();
 
   if (poses_.empty()) {  // the first scan defines the world
@@ -150,16 +145,17 @@ OdometryResult LidarOdometry::registerFrame(const std::vector<Eigen::Vector3d>& 
     res.prediction = last * velocity;
     res.threshold = threshold_.threshold();
     PointToPointIcpResult icp =
-        alignPointToPoint(source, map_, res.prediction, icpParams(config_, res.threshold));
+        alignPointToPoint(source, map_, res.prediction, icpParams(config_, res.threshold), &icp_);
     const double need = config_.min_inlier_fraction * static_cast<double>(source.size());
     if (static_cast<double>(icp.correspondences) < need && poses_.size() >= 2) {
       // The prediction is off by more than the threshold (an abrupt stop, a reversal, a
       // jolt): start again from the last pose with the initial, wide threshold.
       const double wide = std::max(3.0 * config_.initial_threshold, res.threshold);
-      PointToPointIcpResult again = alignPointToPoint(source, map_, last, icpParams(config_, wide));
+      PointToPointIcpResult again =
+          alignPointToPoint(source, map_, last, icpParams(config_, wide), &icp_);
       // Compare both at the same (narrow) threshold.
       const PointToPointIcpResult check =
-          alignPointToPoint(source, map_, again.pose, icpParams(config_, res.threshold));
+          alignPointToPoint(source, map_, again.pose, icpParams(config_, res.threshold), &icp_);
       if (check.correspondences > icp.correspondences) {
         icp = check;
         icp.iterations += again.iterations;
@@ -168,7 +164,8 @@ OdometryResult LidarOdometry::registerFrame(const std::vector<Eigen::Vector3d>& 
     }
     if (config_.fine_threshold > 0.0 && res.threshold > config_.fine_threshold) {
       const int before = icp.iterations;
-      icp = alignPointToPoint(source, map_, icp.pose, icpParams(config_, config_.fine_threshold));
+      icp = alignPointToPoint(source, map_, icp.pose, icpParams(config_, config_.fine_threshold),
+                              &icp_);
       icp.iterations += before;
     }
     res.pose = icp.pose;

@@ -14,6 +14,7 @@
 
 #include "metricmap/registration/adaptive_threshold.h"
 #include "metricmap/registration/lidar_odometry_config.h"
+#include "metricmap/registration/point_to_point_icp.h"
 #include "metricmap/registration/voxel_hash_map.h"
 
 namespace metricmap {
@@ -53,7 +54,7 @@ class LidarOdometry {
   /// \throws std::invalid_argument when deskew is on and `times` does not match `points`
   OdometryResult registerFrame(const std::vector<Eigen::Vector3d>& points,
                                const std::vector<double>& times = {}, const std::string& name = {});
-  /// \brief The same for a PCL cloud (converted once to double vectors).
+  /// \brief The same for a PCL cloud (read in place).
   OdometryResult registerFrame(const pcl::PointCloud<pcl::PointXYZ>& scan,
                                const std::vector<double>& times = {}, const std::string& name = {});
 
@@ -66,10 +67,20 @@ class LidarOdometry {
   void reset();
 
  private:
+  template <class Scan>
+  OdometryResult registerScan(const Scan& points, const std::vector<double>& times,
+                              const std::string& name);
+
   LidarOdometryConfig config_;
   VoxelHashMap map_;
   AdaptiveThreshold threshold_;
   std::vector<Eigen::Isometry3d> poses_;
+  // Buffers kept from scan to scan (fresh memory is expensive): the scan after the first
+  // downsampling, its points' input indices, the ICP's source, the ICP's neighbourhoods.
+  std::vector<Eigen::Vector3d> frame_;
+  std::vector<int> first_idx_;
+  std::vector<Eigen::Vector3d> source_;
+  PointToPointIcpWorkspace icp_;
 };
 
 /// \brief The scan's points as double vectors (no filtering).

@@ -83,19 +83,23 @@ NormalEquations buildSystem(const std::vector<Eigen::Vector3d>& source, const Vo
 
 // Point-to-plane information of the pairs at pose t (sensor frame, rotation scaled by 1/scale).
 Matrix6d surfaceInformation(const std::vector<Eigen::Vector3d>& source, const VoxelHashMap& map,
-                            const Eigen::Isometry3d& t, double threshold, double inv_scale) {
+                            const Eigen::Isometry3d& t, double threshold, double inv_scale,
+                            std::vector<VoxelHashMap::Neighbourhood>& cache) {
   Matrix6d info = Matrix6d::Zero();
   const Eigen::Matrix3d rt = t.linear().transpose();
   Eigen::Vector3d q;
-  for (const Eigen::Vector3d& p : source) {
-    if (!map.nearest(t * p, threshold, q)) continue;
-    const std::vector<Eigen::Vector3d>* cell = map.voxelPoints(q);
-    if (cell == nullptr || cell->size() < 6) continue;
+  std::int32_t v = -1;
+  for (std::size_t i = 0; i < source.size(); ++i) {
+    const Eigen::Vector3d& p = source[i];
+    if (!map.nearestCached(t * p, threshold, cache[i], q, &v)) continue;
+    const int size = map.voxelSize(v);
+    if (size < 6) continue;
+    const Eigen::Vector3d* cell = map.voxelBegin(v);
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (const auto& m : *cell) mean += m;
-    mean /= static_cast<double>(cell->size());
+    for (int k = 0; k < size; ++k) mean += cell[k];
+    mean /= static_cast<double>(size);
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-    for (const auto& m : *cell) cov.noalias() += (m - mean) * (m - mean).transpose();
+    for (int k = 0; k < size; ++k) cov.noalias() += (cell[k] - mean) * (cell[k] - mean).transpose();
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
     eig.computeDirect(cov);
     // Only surfaces: the smallest spread far below the middle one. (A voxel across an edge,
@@ -114,11 +118,15 @@ Matrix6d surfaceInformation(const std::vector<Eigen::Vector3d>& source, const Vo
 
 PointToPointIcpResult alignPointToPoint(const std::vector<Eigen::Vector3d>& source,
                                         const VoxelHashMap& map, const Eigen::Isometry3d& initial,
-                                        const PointToPointIcpParams& params) {
+                                        const PointToPointIcpParams& params,
+                                        PointToPointIcpWorkspace* workspace) {
   PointToPointIcpResult res;
   res.pose = initial;
   if (source.empty() || map.empty()) return res;
-  std::vector<VoxelHashMap::Neighbourhood> cache(source.size());
+  PointToPointIcpWorkspace own;
+  std::vector<VoxelHashMap::Neighbourhood>& cache =
+      (workspace != nullptr ? *workspace : own).neighbourhoods;
+  cache.assign(source.size(), VoxelHashMap::Neighbourhood());
   std::vector<NormalEquations> blocks;
   for (res.iterations = 0; res.iterations < params.max_iterations;) {
     const NormalEquations ne =
@@ -136,15 +144,16 @@ PointToPointIcpResult alignPointToPoint(const std::vector<Eigen::Vector3d>& sour
   Eigen::Vector3d q;
   res.correspondences = 0;
   double sq = 0.0;
-  for (const Eigen::Vector3d& p : source) {
-    res.correspondences += map.nearest(res.pose * p, params.threshold, q) ? 1 : 0;
-    sq += p.squaredNorm();
+  for (std::size_t i = 0; i < source.size(); ++i) {
+    res.correspondences += map.nearestCached(res.pose * source[i], params.threshold, cache[i], q);
+    sq += source[i].squaredNorm();
   }
   if (params.degeneracy_ratio <= 0.0 || res.correspondences < 6) return res;
 
   // Unobservable directions: hold them at the initial guess.
   const double scale = std::max(1.0, std::sqrt(sq / static_cast<double>(source.size())));
-  const Matrix6d info = surfaceInformation(source, map, res.pose, params.threshold, 1.0 / scale);
+  const Matrix6d info =
+      surfaceInformation(source, map, res.pose, params.threshold, 1.0 / scale, cache);
   const Eigen::SelfAdjointEigenSolver<Matrix6d> eig(info);
   const Vector6d lambda = eig.eigenvalues();  // ascending
   if (!(lambda(5) > 0.0)) return res;

@@ -31,6 +31,12 @@ struct PointToPointIcpResult {
   double eigen_ratio = 0.0;         ///< smallest / largest eigenvalue of the surface information
 };
 
+/// \brief Buffers alignPointToPoint() may keep from call to call: a caller registering scan
+/// after scan passes the same one, so that no call touches fresh memory.
+struct PointToPointIcpWorkspace {
+  std::vector<VoxelHashMap::Neighbourhood> neighbourhoods;  ///< one per source point
+};
+
 /// \brief Align `source` (sensor frame) to `map`, starting from `initial`.
 ///
 /// Each step pairs every source point with its nearest map point within the threshold, weights
@@ -47,6 +53,7 @@ struct PointToPointIcpResult {
 /// from `initial` is projected off them, so the pose stays where `initial` put it along them.
 PointToPointIcpResult alignPointToPoint(const std::vector<Eigen::Vector3d>& source,
                                         const VoxelHashMap& map, const Eigen::Isometry3d& initial,
-                                        const PointToPointIcpParams& params);
+                                        const PointToPointIcpParams& params,
+                                        PointToPointIcpWorkspace* workspace = nullptr);
 
 }  // namespace metricmap

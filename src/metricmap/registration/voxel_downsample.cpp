@@ -62,26 +62,87 @@ class KeySet {
   int shift_ = 64;
 };
 
-}  // namespace
-
-Points3d voxelDownsample(const Points3d& points, double voxel, std::vector<int>* kept) {
+void checkVoxel(double voxel) {
   if (!(std::isfinite(voxel) && voxel > 0.0)) {
     throw std::invalid_argument("voxel size must be a finite number > 0, got " +
                                 std::to_string(voxel));
   }
+}
+
+// The first point per cell of the points for which `take(p)` holds. Consecutive points of a
+// scan mostly share a cell, so a point in the cell of the last one taken skips the set.
+template <class Get, class Take>
+void firstPerCell(std::size_t n, Get get, double voxel, Take take, Points3d& out,
+                  std::vector<int>* kept) {
+  checkVoxel(voxel);
   const double inv = 1.0 / voxel;
-  KeySet seen(points.size() / 4 + 16);
-  Points3d out;
-  out.reserve(points.size() / 4 + 16);
+  KeySet seen(n / 4 + 16);
+  out.clear();
+  out.reserve(n / 4 + 16);
   if (kept) kept->clear();
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Array3i c = voxelOf(points[i], inv);
-    if (seen.insert(packVoxel(c.x(), c.y(), c.z()))) {
-      out.push_back(points[i]);
+  std::uint64_t last = ~std::uint64_t{0};  // no packed key equals it
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d p = get(i);
+    if (!take(p)) continue;
+    const Eigen::Array3i c = voxelOf(p, inv);
+    const std::uint64_t key = packVoxel(c.x(), c.y(), c.z());
+    if (key == last) continue;
+    last = key;
+    if (seen.insert(key)) {
+      out.push_back(p);
       if (kept) kept->push_back(static_cast<int>(i));
     }
   }
+}
+
+template <class Get>
+RangeWindowCounts windowed(std::size_t n, Get get, double min_range, double max_range, double voxel,
+                           Points3d& out, std::vector<int>* kept) {
+  RangeWindowCounts counts;
+  const double r_min2 = min_range * min_range, r_max2 = max_range * max_range;
+  firstPerCell(
+      n, get, voxel,
+      [&](const Eigen::Vector3d& p) {
+        if (!p.allFinite()) return false;
+        ++counts.finite;
+        const double r2 = p.squaredNorm();
+        if (r2 < r_min2 || r2 > r_max2) return false;
+        ++counts.in_range;
+        return true;
+      },
+      out, kept);
+  return counts;
+}
+
+}  // namespace
+
+void voxelDownsample(const Points3d& points, double voxel, Points3d& out, std::vector<int>* kept) {
+  if (&out == &points) throw std::invalid_argument("voxelDownsample: output aliases the input");
+  firstPerCell(
+      points.size(), [&](std::size_t i) { return points[i]; }, voxel,
+      [](const Eigen::Vector3d&) { return true; }, out, kept);
+}
+
+Points3d voxelDownsample(const Points3d& points, double voxel, std::vector<int>* kept) {
+  Points3d out;
+  voxelDownsample(points, voxel, out, kept);
   return out;
+}
+
+RangeWindowCounts downsampleInRange(const Points3d& points, double min_range, double max_range,
+                                    double voxel, Points3d& out, std::vector<int>* kept) {
+  return windowed(
+      points.size(), [&](std::size_t i) { return points[i]; }, min_range, max_range, voxel, out,
+      kept);
+}
+
+RangeWindowCounts downsampleInRange(const pcl::PointCloud<pcl::PointXYZ>& points, double min_range,
+                                    double max_range, double voxel, Points3d& out,
+                                    std::vector<int>* kept) {
+  return windowed(
+      points.size(),
+      [&](std::size_t i) -> Eigen::Vector3d { return points[i].getVector3fMap().cast<double>(); },
+      min_range, max_range, voxel, out, kept);
 }
 
 }  // namespace metricmap

@@ -7,41 +7,105 @@
 namespace metricmap {
 
 VoxelHashMap::VoxelHashMap(double voxel, int max_points)
-    : voxel_(voxel), inv_voxel_(1.0 / voxel), max_points_(max_points) {
+    : voxel_(voxel), inv_voxel_(1.0 / voxel), stride_(static_cast<std::size_t>(max_points)) {
   if (!(std::isfinite(voxel) && voxel > 0.0)) {
     throw std::invalid_argument("map voxel size must be a finite number > 0, got " +
                                 std::to_string(voxel));
   }
-  if (max_points < 1) {
-    throw std::invalid_argument("points per voxel must be >= 1, got " + std::to_string(max_points));
+  if (max_points < 1 || max_points > kMaxPointsPerVoxel) {
+    throw std::invalid_argument("points per voxel must be in 1.." +
+                                std::to_string(kMaxPointsPerVoxel) + ", got " +
+                                std::to_string(max_points));
   }
+  rebuildTable(1024);
+}
+
+void VoxelHashMap::clear() {
+  keys_.clear();
+  counts_.clear();
+  points_.clear();
+  held_ = 0;
+  rebuildTable(1024);
+}
+
+void VoxelHashMap::rebuildTable(std::size_t capacity) {
+  table_.assign(capacity, Slot{0, -1});
+  mask_ = capacity - 1;
+  shift_ = 64;
+  for (std::size_t c = capacity; c > 1; c >>= 1) --shift_;
+  for (std::size_t v = 0; v < keys_.size(); ++v) place(keys_[v], static_cast<std::int32_t>(v));
+}
+
+void VoxelHashMap::place(std::uint64_t key, std::int32_t voxel) {
+  std::size_t i = (key * 0x9E3779B97F4A7C15ull) >> shift_;
+  while (table_[i].voxel >= 0) i = (i + 1) & mask_;
+  table_[i] = Slot{key, voxel};
+}
+
+std::int32_t VoxelHashMap::find(std::uint64_t key) const {
+  // Fibonacci hashing: the product's top bits depend on every bit of the key.
+  for (std::size_t i = (key * 0x9E3779B97F4A7C15ull) >> shift_;; i = (i + 1) & mask_) {
+    const Slot& s = table_[i];
+    if (s.voxel < 0 || s.key == key) return s.voxel;
+  }
+}
+
+std::int32_t VoxelHashMap::findOrAdd(std::uint64_t key) {
+  const std::int32_t found = find(key);
+  if (found >= 0) return found;
+  if (keys_.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
+    throw CapacityError("local map: more than 2^31 voxels");
+  }
+  const auto v = static_cast<std::int32_t>(keys_.size());
+  keys_.push_back(key);
+  counts_.push_back(0);
+  points_.resize(keys_.size() * stride_);
+  if (2 * keys_.size() > table_.size()) {
+    rebuildTable(2 * table_.size());
+  } else {
+    place(key, v);
+  }
+  return v;
 }
 
 void VoxelHashMap::add(const std::vector<Eigen::Vector3d>& points) {
   for (const Eigen::Vector3d& p : points) {
     const Eigen::Array3i c = voxelOf(p, inv_voxel_);
-    auto& cell = map_[packVoxel(c.x(), c.y(), c.z())];
-    if (cell.size() >= static_cast<std::size_t>(max_points_)) continue;
-    if (cell.empty()) cell.reserve(static_cast<std::size_t>(max_points_));
-    cell.push_back(p);
-    ++points_;
+    const std::int32_t v = findOrAdd(packVoxel(c.x(), c.y(), c.z()));
+    std::int32_t& n = counts_[static_cast<std::size_t>(v)];
+    if (static_cast<std::size_t>(n) >= stride_) continue;
+    points_[static_cast<std::size_t>(v) * stride_ + static_cast<std::size_t>(n)] = p;
+    ++n;
+    ++held_;
   }
 }
 
 void VoxelHashMap::removeFar(const Eigen::Vector3d& origin, double radius) {
   const double r2 = radius * radius;
-  for (auto it = map_.begin(); it != map_.end();) {
-    if ((it->second.front() - origin).squaredNorm() > r2) {
-      points_ -= it->second.size();
-      it = map_.erase(it);
-    } else {
-      ++it;
+  // Keep the survivors in their order, packed to the front.
+  std::size_t out = 0;
+  for (std::size_t v = 0; v < keys_.size(); ++v) {
+    if ((points_[v * stride_] - origin).squaredNorm() > r2) {
+      held_ -= static_cast<std::size_t>(counts_[v]);
+      continue;
     }
+    if (out != v) {
+      keys_[out] = keys_[v];
+      counts_[out] = counts_[v];
+      std::copy_n(points_.begin() + static_cast<std::ptrdiff_t>(v * stride_), counts_[v],
+                  points_.begin() + static_cast<std::ptrdiff_t>(out * stride_));
+    }
+    ++out;
   }
+  if (out == keys_.size()) return;
+  keys_.resize(out);
+  counts_.resize(out);
+  points_.resize(out * stride_);
+  rebuildTable(table_.size());
 }
 
 bool VoxelHashMap::nearestCached(const Eigen::Vector3d& p, double max_distance, Neighbourhood& hood,
-                                 Eigen::Vector3d& q) const {
+                                 Eigen::Vector3d& q, std::int32_t* voxel) const {
   const Eigen::Array3d s = p.array() * inv_voxel_;
   const Eigen::Array3i c = voxelOfScaled(s, p);
   const std::uint64_t key = packVoxel(c.x(), c.y(), c.z());
@@ -52,10 +116,8 @@ bool VoxelHashMap::nearestCached(const Eigen::Vector3d& p, double max_distance, 
   }
   auto cellAt = [&](int i) {
     if ((hood.looked_up >> i & 1u) == 0) {
-      const auto it =
-          map_.find(packVoxel(hood.center.x() + i / 9 - 1, hood.center.y() + i / 3 % 3 - 1,
-                              hood.center.z() + i % 3 - 1));
-      hood.cells[i] = it == map_.end() ? nullptr : &it->second;
+      hood.cells[i] = find(packVoxel(hood.center.x() + i / 9 - 1, hood.center.y() + i / 3 % 3 - 1,
+                                     hood.center.z() + i % 3 - 1));
       hood.looked_up |= 1u << i;
     }
     return hood.cells[i];
@@ -68,7 +130,8 @@ bool VoxelHashMap::nearestCached(const Eigen::Vector3d& p, double max_distance, 
       {below[0], 0.0, above[0]}, {below[1], 0.0, above[1]}, {below[2], 0.0, above[2]}};
   double best = max_distance * max_distance;
   int best_cell = 27;
-  bool found = false;
+  const Eigen::Vector3d* best_point = nullptr;
+  std::int32_t best_voxel = -1;
   // A margin for rounding: skip only voxels clearly farther than the best so far.
   auto farther = [&](double d2) { return d2 > best * (1.0 + 1e-9) + 1e-12; };
   // Own voxel first (it usually holds the answer), then outwards, one axis at a time, so that
@@ -83,21 +146,26 @@ bool VoxelHashMap::nearestCached(const Eigen::Vector3d& p, double max_distance, 
       for (const int z : kOrder) {
         if (farther(bxy + box[2][z])) continue;
         const int i = 9 * x + 3 * y + z;
-        const Cell* points = cellAt(i);
-        if (points == nullptr) continue;
-        for (const Eigen::Vector3d& m : *points) {
-          const double d2 = (m - p).squaredNorm();
-          if (d2 < best || (d2 == best && found && i < best_cell)) {
+        const std::int32_t v = cellAt(i);
+        if (v < 0) continue;
+        const Eigen::Vector3d* m = voxelBegin(v);
+        const Eigen::Vector3d* end = m + counts_[static_cast<std::size_t>(v)];
+        for (; m != end; ++m) {
+          const double d2 = (*m - p).squaredNorm();
+          if (d2 < best || (d2 == best && best_point != nullptr && i < best_cell)) {
             best = d2;
             best_cell = i;
-            q = m;
-            found = true;
+            best_point = m;
+            best_voxel = v;
           }
         }
       }
     }
   }
-  return found;
+  if (best_point == nullptr) return false;
+  q = *best_point;
+  if (voxel != nullptr) *voxel = best_voxel;
+  return true;
 }
 
 bool VoxelHashMap::nearest(const Eigen::Vector3d& p, double max_distance,
@@ -106,24 +174,23 @@ bool VoxelHashMap::nearest(const Eigen::Vector3d& p, double max_distance,
   return nearestCached(p, max_distance, hood, q);
 }
 
-const std::vector<Eigen::Vector3d>* VoxelHashMap::voxelPoints(const Eigen::Vector3d& p) const {
+std::int32_t VoxelHashMap::voxelOfPoint(const Eigen::Vector3d& p) const {
   const Eigen::Array3i c = voxelOf(p, inv_voxel_);
-  const auto it = map_.find(packVoxel(c.x(), c.y(), c.z()));
-  return it == map_.end() ? nullptr : &it->second;
+  return find(packVoxel(c.x(), c.y(), c.z()));
 }
 
 std::size_t VoxelHashMap::bytes() const {
-  // Each voxel: a hash node (key, vector header, next pointer) plus a bucket pointer, and its
-  // reserved point storage.
-  const std::size_t node =
-      sizeof(std::uint64_t) + sizeof(std::vector<Eigen::Vector3d>) + sizeof(void*) + sizeof(void*);
-  return map_.size() * (node + static_cast<std::size_t>(max_points_) * sizeof(Eigen::Vector3d));
+  return keys_.capacity() * sizeof(std::uint64_t) + counts_.capacity() * sizeof(std::int32_t) +
+         points_.capacity() * sizeof(Eigen::Vector3d) + table_.capacity() * sizeof(Slot);
 }
 
 std::vector<Eigen::Vector3d> VoxelHashMap::cloud() const {
   std::vector<Eigen::Vector3d> out;
-  out.reserve(points_);
-  for (const auto& kv : map_) out.insert(out.end(), kv.second.begin(), kv.second.end());
+  out.reserve(held_);
+  for (std::size_t v = 0; v < keys_.size(); ++v) {
+    out.insert(out.end(), points_.begin() + static_cast<std::ptrdiff_t>(v * stride_),
+               points_.begin() + static_cast<std::ptrdiff_t>(v * stride_ + counts_[v]));
+  }
   return out;
 }
 
