@@ -81,9 +81,9 @@ void run(const OdometryOptions& o) {
     loadCloud(seq.scan(frames[k]), scan);
     load_s += secondsSince(t);
     t = std::chrono::steady_clock::now();
-    const std::vector<Eigen::Vector3d> points = toPoints3d(scan);
-    const OdometryResult r = odometry.registerFrame(
-        points, o.deskew ? azimuthTimes(points) : std::vector<double>{}, seq.scan(frames[k]));
+    const OdometryResult r =
+        o.deskew ? odometry.registerFrame(scan, azimuthTimes(toPoints3d(scan)), seq.scan(frames[k]))
+                 : odometry.registerFrame(scan, {}, seq.scan(frames[k]));
     ms.push_back(secondsSince(t) * 1e3);
     camera.push_back(tr * r.pose * tr_inv);
     poses_text += poseLine(camera.back());
