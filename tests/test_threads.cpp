@@ -2,11 +2,18 @@
 // nodes, counts and means, bit for bit, on real KITTI points (with NaN points and an index
 // subset as well); the VoxelGrid-equivalent grid keeps its cell count; the odometry's poses are
 // the same bits for every thread count.
+#include <algorithm>
+#include <chrono>
 #include <cstring>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 
 #include "metricmap/datasets/kitti_sequence.h"
+#include "metricmap/detail/thread_team.h"
 #include "metricmap/grid/occupancy_grid.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/octree/adaptive_octree.h"
@@ -113,6 +120,42 @@ TEST(Threads, OctreeNodesAndMeansDoNotDependOnTheThreadCount) {
         ASSERT_TRUE(sameBits(a[i].min, b[i].min) && sameBits(a[i].max, b[i].max)) << i;
       }
     }
+  }
+}
+
+TEST(Threads, TeamRunsEveryThreadOncePerRunAndRethrows) {
+  for (const unsigned size : {1u, 2u, 3u}) {
+    ThreadTeam team(size);
+    ASSERT_EQ(team.size(), size);
+    std::vector<long> hits(size, 0);
+    long total = 0;
+    for (int run = 0; run < 2000; ++run) {
+      team.run([&](unsigned t) { hits[t] += run; });
+      total += run;
+      // Now and then let the workers fall asleep between runs.
+      if (run % 500 == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    for (unsigned t = 0; t < size; ++t) EXPECT_EQ(hits[t], total) << "thread " << t;
+    // The first failure by thread number is rethrown after all have finished; the team stays
+    // usable.
+    std::vector<int> finished(size, 0);
+    try {
+      team.run([&](unsigned t) {
+        finished[t] = 1;
+        if (t == size - 1) throw std::runtime_error("thread " + std::to_string(t));
+      });
+      ADD_FAILURE() << "no exception";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), "thread " + std::to_string(size - 1));
+    }
+    EXPECT_EQ(std::count(finished.begin(), finished.end(), 1), static_cast<long>(size));
+    int after = 0;
+    std::mutex m;
+    team.run([&](unsigned) {
+      std::lock_guard<std::mutex> lock(m);
+      ++after;
+    });
+    EXPECT_EQ(after, static_cast<int>(size));
   }
 }
 

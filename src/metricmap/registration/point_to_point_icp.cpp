@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "metricmap/detail/parallel.h"
+#include "metricmap/detail/thread_team.h"
 #include "metricmap/registration/se3.h"
 
 namespace metricmap {
@@ -55,21 +56,25 @@ void addPairs(const std::vector<Eigen::Vector3d>& source, std::size_t begin, std
   }
 }
 
+// fn(b) for every block b of `count`, the blocks split into one contiguous run per thread.
+template <class Fn>
+void forBlocks(ThreadTeam& team, std::size_t count, Fn fn) {
+  const unsigned used = team.size();
+  team.run([&](unsigned th) {
+    const auto range = chunkOf(count, used, th);
+    for (std::size_t b = range.first; b < range.second; ++b) fn(b);
+  });
+}
+
 NormalEquations buildSystem(const std::vector<Eigen::Vector3d>& source, const VoxelHashMap& map,
-                            const Eigen::Isometry3d& t, double threshold, unsigned threads,
+                            const Eigen::Isometry3d& t, double threshold, ThreadTeam& team,
                             std::vector<VoxelHashMap::Neighbourhood>& cache,
                             std::vector<NormalEquations>& blocks) {
   const std::size_t n = source.size(), count = (n + kBlock - 1) / kBlock;
   blocks.assign(count, NormalEquations());
-  // At least 8 blocks (2 048 points) per thread: each step starts its threads afresh, so on
-  // many cores more threads would cost more than they share.
-  const unsigned used = resolveThreads(threads, count, 8);
-  parallelRun(used, [&](unsigned th) {
-    const auto range = chunkOf(count, used, th);
-    for (std::size_t b = range.first; b < range.second; ++b) {
-      addPairs(source, b * kBlock, std::min(n, (b + 1) * kBlock), map, t, threshold, cache,
-               blocks[b]);
-    }
+  forBlocks(team, count, [&](std::size_t b) {
+    addPairs(source, b * kBlock, std::min(n, (b + 1) * kBlock), map, t, threshold, cache,
+             blocks[b]);
   });
   NormalEquations ne;
   for (const NormalEquations& b : blocks) {
@@ -81,15 +86,17 @@ NormalEquations buildSystem(const std::vector<Eigen::Vector3d>& source, const Vo
   return ne;
 }
 
-// Point-to-plane information of the pairs at pose t (sensor frame, rotation scaled by 1/scale).
-Matrix6d surfaceInformation(const std::vector<Eigen::Vector3d>& source, const VoxelHashMap& map,
-                            const Eigen::Isometry3d& t, double threshold, double inv_scale,
+// Point-to-plane information of the pairs of source[begin, end) at pose t (sensor frame,
+// rotation scaled by 1/scale).
+Matrix6d surfaceInformation(const std::vector<Eigen::Vector3d>& source, std::size_t begin,
+                            std::size_t end, const VoxelHashMap& map, const Eigen::Isometry3d& t,
+                            double threshold, double inv_scale,
                             std::vector<VoxelHashMap::Neighbourhood>& cache) {
   Matrix6d info = Matrix6d::Zero();
   const Eigen::Matrix3d rt = t.linear().transpose();
   Eigen::Vector3d q;
   std::int32_t v = -1;
-  for (std::size_t i = 0; i < source.size(); ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
     const Eigen::Vector3d& p = source[i];
     if (!map.nearestCached(t * p, threshold, cache[i], q, &v)) continue;
     const int size = map.voxelSize(v);
@@ -116,6 +123,16 @@ Matrix6d surfaceInformation(const std::vector<Eigen::Vector3d>& source, const Vo
 
 }  // namespace
 
+PointToPointIcpWorkspace::PointToPointIcpWorkspace() = default;
+PointToPointIcpWorkspace::~PointToPointIcpWorkspace() = default;
+PointToPointIcpWorkspace::PointToPointIcpWorkspace(const PointToPointIcpWorkspace&) {}
+PointToPointIcpWorkspace& PointToPointIcpWorkspace::operator=(const PointToPointIcpWorkspace&) {
+  return *this;
+}
+PointToPointIcpWorkspace::PointToPointIcpWorkspace(PointToPointIcpWorkspace&&) noexcept = default;
+PointToPointIcpWorkspace& PointToPointIcpWorkspace::operator=(PointToPointIcpWorkspace&&) noexcept =
+    default;
+
 PointToPointIcpResult alignPointToPoint(const std::vector<Eigen::Vector3d>& source,
                                         const VoxelHashMap& map, const Eigen::Isometry3d& initial,
                                         const PointToPointIcpParams& params,
@@ -124,13 +141,19 @@ PointToPointIcpResult alignPointToPoint(const std::vector<Eigen::Vector3d>& sour
   res.pose = initial;
   if (source.empty() || map.empty()) return res;
   PointToPointIcpWorkspace own;
-  std::vector<VoxelHashMap::Neighbourhood>& cache =
-      (workspace != nullptr ? *workspace : own).neighbourhoods;
+  PointToPointIcpWorkspace& ws = workspace != nullptr ? *workspace : own;
+  std::vector<VoxelHashMap::Neighbourhood>& cache = ws.neighbourhoods;
   cache.assign(source.size(), VoxelHashMap::Neighbourhood());
+  const std::size_t n = source.size(), count = (n + kBlock - 1) / kBlock;
+  // At least 2 blocks (512 points) per thread; the team is kept in the workspace, so a step
+  // costs a wake-up, not a thread start.
+  const unsigned threads = resolveThreads(params.threads, count, 2);
+  if (!ws.team || ws.team->size() != threads) ws.team = std::make_unique<ThreadTeam>(threads);
+  ThreadTeam& team = *ws.team;
   std::vector<NormalEquations> blocks;
   for (res.iterations = 0; res.iterations < params.max_iterations;) {
     const NormalEquations ne =
-        buildSystem(source, map, res.pose, params.threshold, params.threads, cache, blocks);
+        buildSystem(source, map, res.pose, params.threshold, team, cache, blocks);
     if (ne.pairs < 6) break;
     const Vector6d step = ne.h.ldlt().solve(-ne.g);
     if (!step.allFinite()) break;
@@ -141,19 +164,28 @@ PointToPointIcpResult alignPointToPoint(const std::vector<Eigen::Vector3d>& sour
       break;
     }
   }
-  Eigen::Vector3d q;
+  std::vector<std::size_t> paired(count, 0);
+  forBlocks(team, count, [&](std::size_t b) {
+    Eigen::Vector3d q;
+    for (std::size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
+      paired[b] += map.nearestCached(res.pose * source[i], params.threshold, cache[i], q);
+    }
+  });
   res.correspondences = 0;
-  double sq = 0.0;
-  for (std::size_t i = 0; i < source.size(); ++i) {
-    res.correspondences += map.nearestCached(res.pose * source[i], params.threshold, cache[i], q);
-    sq += source[i].squaredNorm();
-  }
+  for (const std::size_t c : paired) res.correspondences += c;
   if (params.degeneracy_ratio <= 0.0 || res.correspondences < 6) return res;
+  double sq = 0.0;
+  for (const Eigen::Vector3d& p : source) sq += p.squaredNorm();
 
   // Unobservable directions: hold them at the initial guess.
   const double scale = std::max(1.0, std::sqrt(sq / static_cast<double>(source.size())));
-  const Matrix6d info =
-      surfaceInformation(source, map, res.pose, params.threshold, 1.0 / scale, cache);
+  std::vector<Matrix6d> infos(count);
+  forBlocks(team, count, [&](std::size_t b) {
+    infos[b] = surfaceInformation(source, b * kBlock, std::min(n, (b + 1) * kBlock), map, res.pose,
+                                  params.threshold, 1.0 / scale, cache);
+  });
+  Matrix6d info = Matrix6d::Zero();
+  for (const Matrix6d& m : infos) info += m;
   const Eigen::SelfAdjointEigenSolver<Matrix6d> eig(info);
   const Vector6d lambda = eig.eigenvalues();  // ascending
   if (!(lambda(5) > 0.0)) return res;

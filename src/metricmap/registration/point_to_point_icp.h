@@ -3,6 +3,7 @@
 /// \brief Robust point-to-point ICP of a scan against a VoxelHashMap: Gauss-Newton with a
 /// Geman-McClure kernel; directions the scene does not constrain are held at the initial guess.
 
+#include <memory>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -10,6 +11,8 @@
 #include "metricmap/registration/voxel_hash_map.h"
 
 namespace metricmap {
+
+class ThreadTeam;
 
 struct PointToPointIcpParams {
   double threshold = 1.0;          ///< correspondences farther than this (m) are ignored
@@ -33,8 +36,17 @@ struct PointToPointIcpResult {
 
 /// \brief Buffers alignPointToPoint() may keep from call to call: a caller registering scan
 /// after scan passes the same one, so that no call touches fresh memory.
+/// A copy starts empty: two objects never share their threads.
 struct PointToPointIcpWorkspace {
+  PointToPointIcpWorkspace();
+  ~PointToPointIcpWorkspace();
+  PointToPointIcpWorkspace(const PointToPointIcpWorkspace&);
+  PointToPointIcpWorkspace& operator=(const PointToPointIcpWorkspace&);
+  PointToPointIcpWorkspace(PointToPointIcpWorkspace&&) noexcept;
+  PointToPointIcpWorkspace& operator=(PointToPointIcpWorkspace&&) noexcept;
+
   std::vector<VoxelHashMap::Neighbourhood> neighbourhoods;  ///< one per source point
+  std::unique_ptr<ThreadTeam> team;                         ///< the pairing's threads
 };
 
 /// \brief Align `source` (sensor frame) to `map`, starting from `initial`.
