@@ -1,6 +1,6 @@
 // LidarOdometry per scan (range crop, both downsamplings, ICP, map update) against PCL's GICP as
-// `metricmap kitti --refine gicp` runs it, on the six bundled KITTI scans, single thread. The
-// odometry runs the scans forward and back (0..5..0..) for 1000 scans and reports the median
+// `metricmap kitti --refine gicp` runs it, on the six bundled KITTI scans, one and two threads.
+// The odometry runs the scans forward and back (0..5..0..) for 1000 scans and reports the median
 // time per scan and the largest local map seen.
 #include <algorithm>
 #include <chrono>
@@ -44,7 +44,7 @@ void BM_LidarOdometryForwardAndBack(benchmark::State& state) {
   std::size_t max_voxels = 0, max_points = 0, max_bytes = 0, restarts = 0;
   for (auto _ : state) {
     LidarOdometryConfig config;
-    config.threads = 1;
+    config.threads = static_cast<unsigned>(state.range(0));
     LidarOdometry odo(config);
     ms.clear();
     for (std::size_t k = 0; k < 1000; ++k) {
@@ -69,7 +69,12 @@ void BM_LidarOdometryForwardAndBack(benchmark::State& state) {
   state.counters["restarts"] = static_cast<double>(restarts);
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * 1000));
 }
-BENCHMARK(BM_LidarOdometryForwardAndBack)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(BM_LidarOdometryForwardAndBack)
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 
 // One scan of the odometry in its steady state (frames 0-5 forward, the next scan timed), with
 // 1 and 2 threads for the pairing (the poses are the same).
