@@ -14,7 +14,8 @@ struct LidarOdometryConfig {
   /// \brief Cell of the local map. Scans enter the map downsampled at half of it, and register
   /// with a second downsampling at 1.5 times it.
   double voxel_size = 1.0;
-  /// \brief Points kept per map cell; later points falling in a full cell are discarded.
+  /// \brief Points kept per map cell (1..1000); later points falling in a full cell are
+  /// discarded.
   int max_points_per_voxel = 20;
   /// \brief Standard deviation (m) of the prediction error assumed until motion has been seen;
   /// the correspondence threshold is three standard deviations.
@@ -48,8 +49,9 @@ struct LidarOdometryConfig {
   /// few dozen points (a truncated or filtered file) constrains no pose, so it is refused
   /// naming the frame rather than registered to noise. A real sweep has ~100k.
   int min_points = 100;
-  /// \brief Threads for the scan-to-map pairing (0: all hardware threads). The poses do not
-  /// depend on it: the normal equations are summed in a fixed order.
+  /// \brief Threads for the scan-to-map pairing (0: all hardware threads), kept by the object
+  /// from scan to scan. The poses do not depend on it: the normal equations are summed in a
+  /// fixed order.
   unsigned threads = 0;
 };
 
