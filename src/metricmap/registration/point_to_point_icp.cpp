@@ -101,12 +101,14 @@ Matrix6d surfaceInformation(const std::vector<Eigen::Vector3d>& source, std::siz
     if (!map.nearestCached(t * p, threshold, cache[i], q, &v)) continue;
     const int size = map.voxelSize(v);
     if (size < 6) continue;
-    const Eigen::Vector3d* cell = map.voxelBegin(v);
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (int k = 0; k < size; ++k) mean += cell[k];
+    for (int k = 0; k < size; ++k) mean += map.voxelPoint(v, k);
     mean /= static_cast<double>(size);
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-    for (int k = 0; k < size; ++k) cov.noalias() += (cell[k] - mean) * (cell[k] - mean).transpose();
+    for (int k = 0; k < size; ++k) {
+      const Eigen::Vector3d d = map.voxelPoint(v, k) - mean;
+      cov.noalias() += d * d.transpose();
+    }
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
     eig.computeDirect(cov);
     // Only surfaces: the smallest spread far below the middle one. (A voxel across an edge,

@@ -1,10 +1,55 @@
 #include "metricmap/registration/voxel_hash_map.h"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace metricmap {
+namespace {
+
+// Squared distance from p to a point, as Eigen's squaredNorm() of the difference gives it.
+inline double squaredDistance(double x, double y, double z, const Eigen::Vector3d& p) {
+  const double dx = x - p.x(), dy = y - p.y(), dz = z - p.z();
+  return (dx * dx + dy * dy) + dz * dz;
+}
+
+// Smallest squared distance from p to the n points of a voxel block (x, y, z rows `stride`
+// apart), two points at a time where SSE2 is there (the same operations, lane by lane).
+double nearestInVoxel(const double* x, std::size_t stride, int n, const Eigen::Vector3d& p) {
+  const double* y = x + stride;
+  const double* z = y + stride;
+  double best = std::numeric_limits<double>::infinity();
+  int j = 0;
+#if defined(__SSE2__)
+  const __m128d px = _mm_set1_pd(p.x()), py = _mm_set1_pd(p.y()), pz = _mm_set1_pd(p.z());
+  __m128d lowest = _mm_set1_pd(best);
+  for (; j + 2 <= n; j += 2) {
+    const __m128d dx = _mm_sub_pd(_mm_loadu_pd(x + j), px);
+    const __m128d dy = _mm_sub_pd(_mm_loadu_pd(y + j), py);
+    const __m128d dz = _mm_sub_pd(_mm_loadu_pd(z + j), pz);
+    lowest = _mm_min_pd(
+        lowest, _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz)));
+  }
+  best = std::min(_mm_cvtsd_f64(lowest), _mm_cvtsd_f64(_mm_unpackhi_pd(lowest, lowest)));
+#endif
+  for (; j < n; ++j) best = std::min(best, squaredDistance(x[j], y[j], z[j], p));
+  return best;
+}
+
+// The first of the n points of a voxel block at squared distance d2 from p.
+int firstAt(const double* x, std::size_t stride, int n, const Eigen::Vector3d& p, double d2) {
+  for (int k = 0; k < n; ++k) {
+    if (squaredDistance(x[k], x[k + stride], x[k + 2 * stride], p) == d2) return k;
+  }
+  return 0;  // not reached: d2 is one of the points' distances
+}
+
+}  // namespace
 
 VoxelHashMap::VoxelHashMap(double voxel, int max_points)
     : voxel_(voxel), inv_voxel_(1.0 / voxel), stride_(static_cast<std::size_t>(max_points)) {
@@ -23,7 +68,7 @@ VoxelHashMap::VoxelHashMap(double voxel, int max_points)
 void VoxelHashMap::clear() {
   keys_.clear();
   counts_.clear();
-  points_.clear();
+  coords_.clear();
   held_ = 0;
   rebuildTable(1024);
 }
@@ -59,7 +104,7 @@ std::int32_t VoxelHashMap::findOrAdd(std::uint64_t key) {
   const auto v = static_cast<std::int32_t>(keys_.size());
   keys_.push_back(key);
   counts_.push_back(0);
-  points_.resize(keys_.size() * stride_);
+  coords_.resize(keys_.size() * 3 * stride_);
   if (2 * keys_.size() > table_.size()) {
     rebuildTable(2 * table_.size());
   } else {
@@ -74,7 +119,10 @@ void VoxelHashMap::add(const std::vector<Eigen::Vector3d>& points) {
     const std::int32_t v = findOrAdd(packVoxel(c.x(), c.y(), c.z()));
     std::int32_t& n = counts_[static_cast<std::size_t>(v)];
     if (static_cast<std::size_t>(n) >= stride_) continue;
-    points_[static_cast<std::size_t>(v) * stride_ + static_cast<std::size_t>(n)] = p;
+    double* x = block(v) + n;
+    x[0] = p.x();
+    x[stride_] = p.y();
+    x[2 * stride_] = p.z();
     ++n;
     ++held_;
   }
@@ -85,22 +133,22 @@ void VoxelHashMap::removeFar(const Eigen::Vector3d& origin, double radius) {
   // Keep the survivors in their order, packed to the front.
   std::size_t out = 0;
   for (std::size_t v = 0; v < keys_.size(); ++v) {
-    if ((points_[v * stride_] - origin).squaredNorm() > r2) {
+    const auto vi = static_cast<std::int32_t>(v);
+    if ((voxelPoint(vi, 0) - origin).squaredNorm() > r2) {
       held_ -= static_cast<std::size_t>(counts_[v]);
       continue;
     }
     if (out != v) {
       keys_[out] = keys_[v];
       counts_[out] = counts_[v];
-      std::copy_n(points_.begin() + static_cast<std::ptrdiff_t>(v * stride_), counts_[v],
-                  points_.begin() + static_cast<std::ptrdiff_t>(out * stride_));
+      std::copy_n(block(vi), 3 * stride_, block(static_cast<std::int32_t>(out)));
     }
     ++out;
   }
   if (out == keys_.size()) return;
   keys_.resize(out);
   counts_.resize(out);
-  points_.resize(out * stride_);
+  coords_.resize(out * 3 * stride_);
   rebuildTable(table_.size());
 }
 
@@ -130,8 +178,8 @@ bool VoxelHashMap::nearestCached(const Eigen::Vector3d& p, double max_distance, 
       {below[0], 0.0, above[0]}, {below[1], 0.0, above[1]}, {below[2], 0.0, above[2]}};
   double best = max_distance * max_distance;
   int best_cell = 27;
-  const Eigen::Vector3d* best_point = nullptr;
   std::int32_t best_voxel = -1;
+  int best_k = 0;
   // A margin for rounding: skip only voxels clearly farther than the best so far.
   auto farther = [&](double d2) { return d2 > best * (1.0 + 1e-9) + 1e-12; };
   // Own voxel first (it usually holds the answer), then outwards, one axis at a time, so that
@@ -148,22 +196,19 @@ bool VoxelHashMap::nearestCached(const Eigen::Vector3d& p, double max_distance, 
         const int i = 9 * x + 3 * y + z;
         const std::int32_t v = cellAt(i);
         if (v < 0) continue;
-        const Eigen::Vector3d* m = voxelBegin(v);
-        const Eigen::Vector3d* end = m + counts_[static_cast<std::size_t>(v)];
-        for (; m != end; ++m) {
-          const double d2 = (*m - p).squaredNorm();
-          if (d2 < best || (d2 == best && best_point != nullptr && i < best_cell)) {
-            best = d2;
-            best_cell = i;
-            best_point = m;
-            best_voxel = v;
-          }
+        const int n = counts_[static_cast<std::size_t>(v)];
+        const double d2 = nearestInVoxel(block(v), stride_, n, p);
+        if (d2 < best || (d2 == best && best_voxel >= 0 && i < best_cell)) {
+          best = d2;
+          best_cell = i;
+          best_voxel = v;
+          best_k = firstAt(block(v), stride_, n, p, d2);
         }
       }
     }
   }
-  if (best_point == nullptr) return false;
-  q = *best_point;
+  if (best_voxel < 0) return false;
+  q = voxelPoint(best_voxel, best_k);
   if (voxel != nullptr) *voxel = best_voxel;
   return true;
 }
@@ -181,15 +226,15 @@ std::int32_t VoxelHashMap::voxelOfPoint(const Eigen::Vector3d& p) const {
 
 std::size_t VoxelHashMap::bytes() const {
   return keys_.capacity() * sizeof(std::uint64_t) + counts_.capacity() * sizeof(std::int32_t) +
-         points_.capacity() * sizeof(Eigen::Vector3d) + table_.capacity() * sizeof(Slot);
+         coords_.capacity() * sizeof(double) + table_.capacity() * sizeof(Slot);
 }
 
 std::vector<Eigen::Vector3d> VoxelHashMap::cloud() const {
   std::vector<Eigen::Vector3d> out;
   out.reserve(held_);
   for (std::size_t v = 0; v < keys_.size(); ++v) {
-    out.insert(out.end(), points_.begin() + static_cast<std::ptrdiff_t>(v * stride_),
-               points_.begin() + static_cast<std::ptrdiff_t>(v * stride_ + counts_[v]));
+    const auto vi = static_cast<std::int32_t>(v);
+    for (int k = 0; k < counts_[v]; ++k) out.push_back(voxelPoint(vi, k));
   }
   return out;
 }

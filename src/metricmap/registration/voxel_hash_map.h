@@ -15,8 +15,9 @@ namespace metricmap {
 /// \brief Points in a voxel hash, at most `max_points` per voxel, first come first kept.
 ///
 /// The voxels are numbered 0..voxels()-1; voxel v's points lie in one block of `max_points`
-/// slots, and an open-addressing table (linear probing, Fibonacci hashing of the packed cell)
-/// finds a voxel's number from its cell.
+/// slots per coordinate (all x, then all y, then all z, so that distances to a voxel's points
+/// are computed two or four at a time), and an open-addressing table (linear probing, Fibonacci
+/// hashing of the packed cell) finds a voxel's number from its cell.
 class VoxelHashMap {
  public:
   /// \brief Largest `max_points` accepted (every voxel reserves room for that many points).
@@ -49,11 +50,13 @@ class VoxelHashMap {
   bool nearestCached(const Eigen::Vector3d& p, double max_distance, Neighbourhood& hood,
                      Eigen::Vector3d& q, std::int32_t* voxel = nullptr) const;
 
-  /// \brief Points of voxel number `v` (0 <= v < voxels()).
-  const Eigen::Vector3d* voxelBegin(std::int32_t v) const {
-    return points_.data() + static_cast<std::size_t>(v) * stride_;
-  }
+  /// \brief Number of points of voxel number `v` (0 <= v < voxels()), and its k-th point
+  /// (0 <= k < voxelSize(v)), in the order they came.
   int voxelSize(std::int32_t v) const { return counts_[static_cast<std::size_t>(v)]; }
+  Eigen::Vector3d voxelPoint(std::int32_t v, int k) const {
+    const double* x = block(v) + k;
+    return {x[0], x[stride_], x[2 * stride_]};
+  }
   /// \brief Number of the voxel holding `p`, -1 when that voxel is empty.
   std::int32_t voxelOfPoint(const Eigen::Vector3d& p) const;
 
@@ -72,6 +75,12 @@ class VoxelHashMap {
     std::uint64_t key;
     std::int32_t voxel;  ///< -1: empty slot
   };
+  const double* block(std::int32_t v) const {
+    return coords_.data() + static_cast<std::size_t>(v) * 3 * stride_;
+  }
+  double* block(std::int32_t v) {
+    return coords_.data() + static_cast<std::size_t>(v) * 3 * stride_;
+  }
   std::int32_t find(std::uint64_t key) const;
   std::int32_t findOrAdd(std::uint64_t key);
   void place(std::uint64_t key, std::int32_t voxel);
@@ -80,10 +89,11 @@ class VoxelHashMap {
   double voxel_, inv_voxel_;
   std::size_t stride_;
   std::size_t held_ = 0;
-  std::vector<std::uint64_t> keys_;      // per voxel
-  std::vector<std::int32_t> counts_;     // per voxel
-  std::vector<Eigen::Vector3d> points_;  // voxel v: [v * stride_, v * stride_ + counts_[v])
-  std::vector<Slot> table_;              // power-of-two size, at most half full
+  std::vector<std::uint64_t> keys_;   // per voxel
+  std::vector<std::int32_t> counts_;  // per voxel
+  // Voxel v: x of its points at [3 v stride_, + counts_[v]), then y at + stride_, z at + 2 stride_.
+  std::vector<double> coords_;
+  std::vector<Slot> table_;  // power-of-two size, at most half full
   std::size_t mask_ = 0;
   int shift_ = 64;
 };
