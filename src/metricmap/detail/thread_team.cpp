@@ -15,10 +15,18 @@ void spinWhile(Busy busy) {
 }  // namespace
 
 ThreadTeam::ThreadTeam(unsigned threads) : errors_(threads < 1 ? 1 : threads) {
-  for (unsigned t = 1; t < threads; ++t) workers_.emplace_back([this, t] { work(t); });
+  try {
+    workers_.reserve(threads);
+    for (unsigned t = 1; t < threads; ++t) workers_.emplace_back([this, t] { work(t); });
+  } catch (...) {
+    stopWorkers();  // a thread that cannot be started: stop those that were
+    throw;
+  }
 }
 
-ThreadTeam::~ThreadTeam() {
+ThreadTeam::~ThreadTeam() { stopWorkers(); }
+
+void ThreadTeam::stopWorkers() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     stop_ = true;

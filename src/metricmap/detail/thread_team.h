@@ -20,6 +20,7 @@ namespace metricmap {
 class ThreadTeam {
  public:
   /// \param threads team size, at least 1 (1: run() calls fn(0) and nothing else)
+  /// \throws std::system_error when a thread cannot be started (none is left running)
   explicit ThreadTeam(unsigned threads);
   ~ThreadTeam();
   ThreadTeam(const ThreadTeam&) = delete;
@@ -31,6 +32,7 @@ class ThreadTeam {
 
  private:
   void work(unsigned t);
+  void stopWorkers();
 
   std::vector<std::thread> workers_;
   std::mutex mutex_;

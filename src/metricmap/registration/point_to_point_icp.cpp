@@ -56,11 +56,12 @@ void addPairs(const std::vector<Eigen::Vector3d>& source, std::size_t begin, std
   }
 }
 
-// fn(b) for every block b of `count`, the blocks split into one contiguous run per thread.
+// fn(b) for every block b of `count`, the blocks split into one contiguous run for each of
+// the team's first `used` threads.
 template <class Fn>
-void forBlocks(ThreadTeam& team, std::size_t count, Fn fn) {
-  const unsigned used = team.size();
+void forBlocks(ThreadTeam& team, unsigned used, std::size_t count, Fn fn) {
   team.run([&](unsigned th) {
+    if (th >= used) return;
     const auto range = chunkOf(count, used, th);
     for (std::size_t b = range.first; b < range.second; ++b) fn(b);
   });
@@ -68,11 +69,11 @@ void forBlocks(ThreadTeam& team, std::size_t count, Fn fn) {
 
 NormalEquations buildSystem(const std::vector<Eigen::Vector3d>& source, const VoxelHashMap& map,
                             const Eigen::Isometry3d& t, double threshold, ThreadTeam& team,
-                            std::vector<VoxelHashMap::Neighbourhood>& cache,
+                            unsigned used, std::vector<VoxelHashMap::Neighbourhood>& cache,
                             std::vector<NormalEquations>& blocks) {
   const std::size_t n = source.size(), count = (n + kBlock - 1) / kBlock;
   blocks.assign(count, NormalEquations());
-  forBlocks(team, count, [&](std::size_t b) {
+  forBlocks(team, used, count, [&](std::size_t b) {
     addPairs(source, b * kBlock, std::min(n, (b + 1) * kBlock), map, t, threshold, cache,
              blocks[b]);
   });
@@ -149,13 +150,14 @@ PointToPointIcpResult alignPointToPoint(const std::vector<Eigen::Vector3d>& sour
   const std::size_t n = source.size(), count = (n + kBlock - 1) / kBlock;
   // At least 2 blocks (512 points) per thread; the team is kept in the workspace, so a step
   // costs a wake-up, not a thread start.
-  const unsigned threads = resolveThreads(params.threads, count, 2);
-  if (!ws.team || ws.team->size() != threads) ws.team = std::make_unique<ThreadTeam>(threads);
+  // The team only grows: a scan with fewer points leaves the extra threads idle.
+  const unsigned used = resolveThreads(params.threads, count, 2);
+  if (!ws.team || ws.team->size() < used) ws.team = std::make_unique<ThreadTeam>(used);
   ThreadTeam& team = *ws.team;
   std::vector<NormalEquations> blocks;
   for (res.iterations = 0; res.iterations < params.max_iterations;) {
     const NormalEquations ne =
-        buildSystem(source, map, res.pose, params.threshold, team, cache, blocks);
+        buildSystem(source, map, res.pose, params.threshold, team, used, cache, blocks);
     if (ne.pairs < 6) break;
     const Vector6d step = ne.h.ldlt().solve(-ne.g);
     if (!step.allFinite()) break;
@@ -167,7 +169,7 @@ PointToPointIcpResult alignPointToPoint(const std::vector<Eigen::Vector3d>& sour
     }
   }
   std::vector<std::size_t> paired(count, 0);
-  forBlocks(team, count, [&](std::size_t b) {
+  forBlocks(team, used, count, [&](std::size_t b) {
     Eigen::Vector3d q;
     for (std::size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
       paired[b] += map.nearestCached(res.pose * source[i], params.threshold, cache[i], q);
@@ -182,7 +184,7 @@ PointToPointIcpResult alignPointToPoint(const std::vector<Eigen::Vector3d>& sour
   // Unobservable directions: hold them at the initial guess.
   const double scale = std::max(1.0, std::sqrt(sq / static_cast<double>(source.size())));
   std::vector<Matrix6d> infos(count);
-  forBlocks(team, count, [&](std::size_t b) {
+  forBlocks(team, used, count, [&](std::size_t b) {
     infos[b] = surfaceInformation(source, b * kBlock, std::min(n, (b + 1) * kBlock), map, res.pose,
                                   params.threshold, 1.0 / scale, cache);
   });

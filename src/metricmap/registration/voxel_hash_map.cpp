@@ -101,15 +101,16 @@ std::int32_t VoxelHashMap::findOrAdd(std::uint64_t key) {
   if (keys_.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
     throw CapacityError("local map: more than 2^31 voxels");
   }
+  // Everything that allocates first, so that running out of memory leaves the map as it was.
+  const std::size_t n = keys_.size() + 1;
+  keys_.reserve(n);
+  counts_.reserve(n);
+  coords_.resize(n * 3 * stride_);
+  if (2 * n > table_.size()) rebuildTable(2 * table_.size());
   const auto v = static_cast<std::int32_t>(keys_.size());
   keys_.push_back(key);
   counts_.push_back(0);
-  coords_.resize(keys_.size() * 3 * stride_);
-  if (2 * keys_.size() > table_.size()) {
-    rebuildTable(2 * table_.size());
-  } else {
-    place(key, v);
-  }
+  place(key, v);
   return v;
 }
 
@@ -180,8 +181,11 @@ bool VoxelHashMap::nearestCached(const Eigen::Vector3d& p, double max_distance, 
   int best_cell = 27;
   std::int32_t best_voxel = -1;
   int best_k = 0;
-  // A margin for rounding: skip only voxels clearly farther than the best so far.
-  auto farther = [&](double d2) { return d2 > best * (1.0 + 1e-9) + 1e-12; };
+  // A margin for rounding: skip only voxels clearly farther than the best so far. The faces'
+  // distances carry the rounding of p / voxel, which grows with the coordinates.
+  const double slack = 1e-12 + 8.0 * voxel_ * voxel_ * (s.abs().maxCoeff() + 1.0) *
+                                   std::numeric_limits<double>::epsilon();
+  auto farther = [&](double d2) { return d2 > best * (1.0 + 1e-9) + slack; };
   // Own voxel first (it usually holds the answer), then outwards, one axis at a time, so that
   // a slab of 9 or a row of 3 voxels whose nearest face is already too far is skipped whole.
   // Ties go to the lower index, as a scan of the 27 voxels in index order would give.
