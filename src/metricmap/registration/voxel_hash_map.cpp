@@ -103,8 +103,8 @@ std::int32_t VoxelHashMap::findOrAdd(std::uint64_t key) {
   }
   // Everything that allocates first, so that running out of memory leaves the map as it was.
   const std::size_t n = keys_.size() + 1;
-  keys_.reserve(n);
-  counts_.reserve(n);
+  if (n > keys_.capacity()) keys_.reserve(2 * n);  // geometric growth, as push_back's
+  if (n > counts_.capacity()) counts_.reserve(2 * n);
   coords_.resize(n * 3 * stride_);
   if (2 * n > table_.size()) rebuildTable(2 * table_.size());
   const auto v = static_cast<std::int32_t>(keys_.size());
