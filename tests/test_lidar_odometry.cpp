@@ -240,6 +240,43 @@ TEST(LidarOdometryParts, VoxelMapAfterRemovalAgainstBruteForce) {
   EXPECT_THROW(VoxelHashMap(1.0, VoxelHashMap::kMaxPointsPerVoxel + 1), std::invalid_argument);
 }
 
+TEST(LidarOdometryParts, VoxelMapNearestFarFromTheOriginWithAnInexactVoxel) {
+  // 0.7 m voxels ~700 km out: p / voxel rounds, and the faces' distances with it. A query a
+  // few centimetres inside a corner of its voxel, a point b on the corner across it, and a
+  // point a in the query's own voxel mirrored from b and then moved one ulp farther in x and
+  // one nearer in y: b is nearer by ~1e-12 m². Skipping b's voxel must not lose it.
+  const double voxel = 0.7, inv = 1.0 / voxel;
+  auto upperFace = [&](double c) {  // the first coordinate of cell c + 1, as the map computes it
+    double face = (c + 1.0) * voxel;
+    while (std::floor(face * inv) > c) face = std::nextafter(face, -1e300);
+    while (std::floor(face * inv) <= c) face = std::nextafter(face, 1e300);
+    return face;
+  };
+  const Eigen::Vector3d r(0.03, 0.025, 0.02);
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> cell(900000, 1040000);
+  int wrong = 0, trials = 0;
+  VoxelHashMap map(voxel, 4);
+  for (int t = 0; t < 2000; ++t) {
+    Eigen::Vector3d b, q;
+    for (int k = 0; k < 3; ++k) {
+      b[k] = upperFace(cell(rng));
+      q[k] = b[k] - r[k];
+    }
+    Eigen::Vector3d a = q - (b - q);
+    a.x() = std::nextafter(a.x(), -1e300);
+    a.y() = std::nextafter(a.y(), 1e300);
+    if (!((b - q).squaredNorm() < (a - q).squaredNorm())) continue;
+    ++trials;
+    map.clear();
+    map.add({a, b});
+    Eigen::Vector3d got;
+    wrong += !map.nearest(q, 0.5, got) || got != b;
+  }
+  EXPECT_EQ(wrong, 0) << "of " << trials;
+  EXPECT_GT(trials, 1500);
+}
+
 TEST(LidarOdometryParts, DownsampleInRangeIsTheWindowThenTheDownsampling) {
   // The plain reference: copy the finite points within the window, downsample the copy, map
   // the kept indices back. Both input forms (double vectors, a PCL cloud) must give it.
