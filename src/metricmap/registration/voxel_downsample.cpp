@@ -34,13 +34,11 @@ class KeySet {
   void reset(std::size_t cap) {
     table_.assign(cap, kEmpty);
     mask_ = cap - 1;
-    shift_ = 64;
-    for (std::size_t c = cap; c > 1; c >>= 1) --shift_;
+    shift_ = fibonacciShift(cap);
     size_ = 0;
   }
   bool place(std::uint64_t key) {
-    // Fibonacci hashing: the product's top bits depend on every bit of the key.
-    for (std::size_t i = (key * 0x9E3779B97F4A7C15ull) >> shift_;; i = (i + 1) & mask_) {
+    for (std::size_t i = fibonacciSlot(key, shift_);; i = (i + 1) & mask_) {
       if (table_[i] == key) return false;
       if (table_[i] == kEmpty) {
         table_[i] = key;

@@ -76,20 +76,18 @@ void VoxelHashMap::clear() {
 void VoxelHashMap::rebuildTable(std::size_t capacity) {
   table_.assign(capacity, Slot{0, -1});
   mask_ = capacity - 1;
-  shift_ = 64;
-  for (std::size_t c = capacity; c > 1; c >>= 1) --shift_;
+  shift_ = fibonacciShift(capacity);
   for (std::size_t v = 0; v < keys_.size(); ++v) place(keys_[v], static_cast<std::int32_t>(v));
 }
 
 void VoxelHashMap::place(std::uint64_t key, std::int32_t voxel) {
-  std::size_t i = (key * 0x9E3779B97F4A7C15ull) >> shift_;
+  std::size_t i = fibonacciSlot(key, shift_);
   while (table_[i].voxel >= 0) i = (i + 1) & mask_;
   table_[i] = Slot{key, voxel};
 }
 
 std::int32_t VoxelHashMap::find(std::uint64_t key) const {
-  // Fibonacci hashing: the product's top bits depend on every bit of the key.
-  for (std::size_t i = (key * 0x9E3779B97F4A7C15ull) >> shift_;; i = (i + 1) & mask_) {
+  for (std::size_t i = fibonacciSlot(key, shift_);; i = (i + 1) & mask_) {
     const Slot& s = table_[i];
     if (s.voxel < 0 || s.key == key) return s.voxel;
   }

@@ -16,7 +16,7 @@ namespace metricmap {
 ///
 /// The voxels are numbered 0..voxels()-1; voxel v's points lie in one block of `max_points`
 /// slots per coordinate (all x, then all y, then all z, so that distances to a voxel's points
-/// are computed two or four at a time), and an open-addressing table (linear probing, Fibonacci
+/// are computed two at a time), and an open-addressing table (linear probing, Fibonacci
 /// hashing of the packed cell) finds a voxel's number from its cell.
 class VoxelHashMap {
  public:

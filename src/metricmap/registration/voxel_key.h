@@ -3,6 +3,7 @@
 /// \brief Integer cell coordinates of a point packed into 64 bits, and their hash.
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 #include <Eigen/Core>
@@ -36,12 +37,16 @@ inline Eigen::Array3i voxelOf(const Eigen::Vector3d& p, double inv_voxel) {
   return voxelOfScaled(p.array() * inv_voxel, p);
 }
 
-/// \brief Hash of a packed key (multiplicative, high bits folded down).
-struct VoxelKeyHash {
-  std::size_t operator()(std::uint64_t k) const {
-    k *= 0x9E3779B97F4A7C15ull;
-    return static_cast<std::size_t>(k ^ (k >> 29));
-  }
-};
+/// \brief Fibonacci hashing for an open-addressing table of `capacity` (a power of two) slots:
+/// the shift that keeps the product's top log2(capacity) bits...
+inline int fibonacciShift(std::size_t capacity) {
+  int shift = 64;
+  for (std::size_t c = capacity; c > 1; c >>= 1) --shift;
+  return shift;
+}
+/// \brief ...and the home slot of a packed key (the product's top bits depend on all of it).
+inline std::size_t fibonacciSlot(std::uint64_t key, int shift) {
+  return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift);
+}
 
 }  // namespace metricmap
