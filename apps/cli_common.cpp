@@ -1,13 +1,20 @@
 #include "cli_common.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
-#include <filesystem>
+#include <cstdio>
 #include <iostream>
 #include <limits>
+#include <optional>
 
 #include "metricmap/common/parse_number.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
+#include "metricmap/io/file_identity.h"
+#include "metricmap/datasets/kitti_sequence.h"
 #include "table.h"
 
 namespace metricmap::cli {
@@ -81,21 +88,51 @@ const CLI::Validator kOutputFile(
     },
     "FILE");
 
-void requireDistinctOutputs(const std::vector<std::pair<std::string, std::string>>& outputs) {
-  namespace fs = std::filesystem;
-  std::vector<std::pair<std::string, std::string>> seen;  // canonical path, option
-  for (const auto& [option, path] : outputs) {
-    if (path.empty()) continue;
-    std::error_code ec;
-    fs::path canonical = fs::weakly_canonical(path, ec);
-    const std::string key = ec ? fs::path(path).lexically_normal().string() : canonical.string();
-    for (const auto& [other, other_option] : seen) {
-      if (other == key) {
-        throw UsageError(option + " and " + other_option + " both write '" + quoteForMessage(path) +
-                         "'");
-      }
+void requireDistinctFiles(const RolePaths& inputs, const RolePaths& outputs) {
+  const std::optional<FileClash> clash = findFileClash(inputs, outputs);
+  if (!clash) return;
+  const auto& [first_role, first_path] = clash->first;
+  const auto& [second_role, second_path] = clash->second;
+  if (clash->output_is_input) {
+    throw UsageError(second_role + " '" + quoteForMessage(second_path) + "' and the " + first_role +
+                     " '" + quoteForMessage(first_path) +
+                     "' are the same file: an output never replaces an input");
+  }
+  std::string message = second_role + " and " + first_role + " both write '" +
+                        quoteForMessage(second_path) + "'";
+  if (first_path != second_path) message += " (also named '" + quoteForMessage(first_path) + "')";
+  throw UsageError(message);
+}
+
+void requireDistinctOutputs(const RolePaths& outputs) { requireDistinctFiles({}, outputs); }
+
+RolePaths withRole(const std::string& role, const std::vector<std::string>& paths) {
+  RolePaths out;
+  out.reserve(paths.size());
+  for (const std::string& p : paths) out.emplace_back(role, p);
+  return out;
+}
+
+RolePaths kittiInputs(const std::string& root, const std::string& sequence,
+                      const std::vector<std::size_t>& frames, bool with_poses) {
+  const KittiSequence seq{root, sequence};
+  RolePaths in;
+  in.reserve(frames.size() + 2);
+  for (const std::size_t f : frames) in.emplace_back("scan", seq.scan(f));
+  in.emplace_back("calib file", seq.calib());
+  if (with_poses) in.emplace_back("poses file", seq.poses());
+  return in;
+}
+
+void guardStandardStreams() {
+  for (const int fd : {STDIN_FILENO, STDOUT_FILENO, STDERR_FILENO}) {
+    if (::fcntl(fd, F_GETFD) != -1 || errno != EBADF) continue;
+    // read-only: writes to a closed stdout still fail (EBADF), as the user meant them to
+    const int null = ::open("/dev/null", O_RDONLY);
+    if (null >= 0 && null != fd) {
+      ::dup2(null, fd);
+      ::close(null);
     }
-    seen.emplace_back(key, option);
   }
 }
 
@@ -120,20 +157,43 @@ void addFormatOption(CLI::App& app, std::string& format, const std::vector<std::
       ->capture_default_str();
 }
 
-void emitTable(const Table& table, const std::string& format, const std::string& path) {
+std::string renderTable(const Table& table, const std::string& format) {
   const TableStyle style = format == "csv"        ? TableStyle::Csv
                            : format == "markdown" ? TableStyle::Markdown
                                                   : TableStyle::Aligned;
-  emit(table.render(style), path);
+  return table.render(style);
 }
+
+void emitTable(const Table& table, const std::string& format, const std::string& path) {
+  emit(renderTable(table, format), path);
+}
+
+void emitTable(const Table& table, const std::string& format, OutputSet& outputs) {
+  emit(renderTable(table, format), outputs);
+}
+
+namespace {
+
+void printChecked(const std::string& text) {
+  if (text.empty()) return;
+  std::cout << text << std::flush;
+  if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout) != 0)
+    throw std::runtime_error("cannot write to standard output");
+}
+
+}  // namespace
 
 void emit(const std::string& text, const std::string& path) {
   if (path.empty()) {
-    std::cout << text << std::flush;
-    if (!std::cout) throw std::runtime_error("cannot write to standard output");
+    printChecked(text);
   } else {
     writeTextAtomic(path, text);
   }
+}
+
+void emit(const std::string& text, OutputSet& outputs) {
+  printChecked(text);  // throws before anything is committed
+  outputs.commit();
 }
 
 void addPcdFormatOption(CLI::App& app, std::string& format) {

@@ -3,8 +3,10 @@
 /// \brief Shared pieces of the `metricmap` subcommands: validators, loading, output formats.
 
 #include <chrono>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <pcl/point_cloud.h>
@@ -12,6 +14,7 @@
 #include <CLI/CLI.hpp>
 
 #include "metricmap/io/load_report.h"
+#include "metricmap/io/output_set.h"
 
 namespace metricmap::cli {
 
@@ -40,10 +43,34 @@ extern const CLI::Validator kCount;
 /// \brief An output file name: not empty (`--out ''` would write nothing and succeed).
 extern const CLI::Validator kOutputFile;
 
-/// \brief Usage error (exit 2) when two of the outputs name the same file; `outputs` holds
-/// (option, path) pairs, empty paths skipped. Paths are compared after weakly_canonical, so
-/// "a.bt" and "./a.bt" are the same file.
-void requireDistinctOutputs(const std::vector<std::pair<std::string, std::string>>& outputs);
+/// \brief (role, path) pairs: the role is an option ("--out") or what the file is ("input",
+/// "poses file"); messages name both.
+using RolePaths = std::vector<std::pair<std::string, std::string>>;
+
+/// \brief Usage error (exit 2) when two outputs name one file, or an output names an input.
+///
+/// Files are compared by identity (metricmap::findFileClash, io/file_identity.h): device and
+/// inode of an existing file, the normalised absolute path (symlinked directories resolved) of
+/// a new one; so `x`, `./x`, `$PWD/x`, `sub/../x`, a symbolic link and a hard link to `x` are
+/// one file. Empty paths are skipped. Call it after parsing, before any input is read or any
+/// output staged: the message names both roles and both paths.
+void requireDistinctFiles(const RolePaths& inputs, const RolePaths& outputs);
+
+/// \brief requireDistinctFiles with no inputs (two outputs naming one file).
+void requireDistinctOutputs(const RolePaths& outputs);
+
+/// \brief Every path of `paths` with the role `role`.
+RolePaths withRole(const std::string& role, const std::vector<std::string>& paths);
+
+/// \brief What a KITTI run reads: each frame's scan ("scan"), the calibration ("calib file") and,
+/// when `with_poses`, the pose file ("poses file") of `sequence` under `root`.
+RolePaths kittiInputs(const std::string& root, const std::string& sequence,
+                      const std::vector<std::size_t>& frames, bool with_poses);
+
+/// \brief Keep standard input, output and error open: a closed one is reopened on /dev/null
+/// (stdout and stderr read-only, so that writing the report fails) so that no output file is
+/// opened as descriptor 0, 1 or 2. Called first in main.
+void guardStandardStreams();
 
 /// \brief Seconds since `start`.
 inline double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -69,6 +96,20 @@ void emitTable(const class Table& table, const std::string& format, const std::s
 
 /// \brief Print to stdout, or write atomically to `path` when it is not empty.
 void emit(const std::string& text, const std::string& path);
+
+/// \brief The rule for a command's report and its output files (docs/RELIABILITY.md): print the
+/// report to stdout, flush and check it, and only then commit `outputs`. When the report
+/// cannot be printed (stdout is a full disk, a closed pipe or closed), std::runtime_error
+/// "cannot write to standard output" is thrown and nothing is committed (the OutputSet's
+/// destructor removes the temporaries): exit 1, no output. `text` may be empty (the report went
+/// to a file of `outputs`).
+void emit(const std::string& text, OutputSet& outputs);
+
+/// \brief emitTable's text, then `outputs` committed, as emit(text, outputs).
+void emitTable(const class Table& table, const std::string& format, OutputSet& outputs);
+
+/// \brief The text emitTable prints.
+std::string renderTable(const class Table& table, const std::string& format);
 
 /// \brief Adds --pcd-format with its check; the value lands in `format`.
 void addPcdFormatOption(CLI::App& app, std::string& format);

@@ -151,7 +151,7 @@ void plot(const std::vector<Record>& records, const CompareOptions& o, const std
 }
 
 void runCompare(const CompareOptions& o) {
-  requireDistinctOutputs({{"--out", o.out}, {"--plot", o.plot}});
+  requireDistinctFiles(withRole("input", o.files), {{"--out", o.out}, {"--plot", o.plot}});
   std::vector<StudyConfig> configs;
   for (const std::string& text : o.configs) {
     StudyConfig c;
@@ -172,8 +172,7 @@ void runCompare(const CompareOptions& o) {
   OutputSet outputs;
   if (!o.out.empty()) writeTextAtomic(outputs.stage(o.out), table);
   if (!o.plot.empty()) plot(records, o, outputs.stage(o.plot));
-  outputs.commit();
-  if (o.out.empty()) emit(table, "");
+  emit(o.out.empty() ? table : std::string(), outputs);  // the report first, then the files
 }
 
 }  // namespace

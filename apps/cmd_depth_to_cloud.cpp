@@ -26,17 +26,22 @@ std::size_t finitePoints(const Cloud& cloud) {
 }
 
 void run(const DepthToCloudOptions& o) {
+  requireDistinctFiles({{"depth image", o.depth},
+                        {"--rgb image", o.rgb},
+                        {"--camera file", o.camera.camera_file}},
+                       {{"--out", o.out}});
   const DepthImage depth = readDepthImage(o.depth);
   const CameraIntrinsics k = resolveIntrinsics(o.camera, depth);
   const double scale = resolveDepthScale(o.camera, k, depth);
   std::size_t valid = 0;
+  OutputSet outputs;  // committed once the report is printed
   if (o.rgb.empty()) {
     const auto cloud = depthToCloud(depth, k, scale);
-    savePcdAtomic(o.out, cloud, parsePcdFormat(o.pcd_format));
+    savePcdAtomic(outputs.stage(o.out), cloud, parsePcdFormat(o.pcd_format));
     valid = finitePoints(cloud);
   } else {
     const auto cloud = depthToCloud(depth, k, scale, readRgbImage(o.rgb));
-    savePcdAtomic(o.out, cloud, parsePcdFormat(o.pcd_format));
+    savePcdAtomic(outputs.stage(o.out), cloud, parsePcdFormat(o.pcd_format));
     valid = finitePoints(cloud);
   }
   emit(nlohmann::json({{"depth", o.depth},
@@ -48,7 +53,7 @@ void run(const DepthToCloudOptions& o) {
                        {"intrinsics", {k.fx, k.fy, k.cx, k.cy}}})
                .dump() +
            "\n",
-       "");
+       outputs);
 }
 
 }  // namespace

@@ -39,10 +39,9 @@ struct GridOutcome {
 };
 
 void emitGrid(const GridOptions& o, const GridOutcome& g) {
-  OutputSet outputs;
+  OutputSet outputs;  // committed once the report is printed
   if (!o.out.empty()) savePcdAtomic(outputs.stage(o.out), g.means, parsePcdFormat(o.pcd_format));
   if (!o.cells.empty()) writeTextAtomic(outputs.stage(o.cells), gridCellsCsv(g.cells));
-  outputs.commit();
 
   const GridStatistics& s = g.stats;
   std::string files = o.files[0];
@@ -58,7 +57,7 @@ void emitGrid(const GridOptions& o, const GridOutcome& g) {
     } else {
       j["files"] = o.files;
     }
-    emit(j.dump(2) + "\n", "");
+    emit(j.dump(2) + "\n", outputs);
     return;
   }
   Table t({"file", "cell_size", "origin", "points", "total_cells", "occupied_cells", "empty_cells",
@@ -66,7 +65,7 @@ void emitGrid(const GridOptions& o, const GridOutcome& g) {
   t.addRow({files, readable(o.cell_size), o.origin, std::to_string(s.points),
             std::to_string(s.total_cells), std::to_string(s.occupied_cells),
             std::to_string(s.empty_cells), fixed(s.mean_points_per_occupied_cell, 2)});
-  emitTable(t, o.format);
+  emitTable(t, o.format, outputs);
 }
 
 /// One process: the files concatenated, one build (any origin).
@@ -154,7 +153,7 @@ GridOutcome buildRanks(const GridOptions& o, const Ranks& ranks) {
 }
 
 void runGrid(GridOptions o) {
-  requireDistinctOutputs({{"--out", o.out}, {"--cells", o.cells}});
+  requireDistinctFiles(withRole("input", o.files), {{"--out", o.out}, {"--cells", o.cells}});
   if (o.distributed && o.origin_given && o.origin != "world")
     throw UsageError("--distributed needs --origin world (cells must be world-aligned to merge)");
   const Ranks ranks(o.distributed);

@@ -111,6 +111,15 @@ void run(const HeightMapOptions& o) {
                                "give exactly one of --camera-height (with --pitch-deg, "
                                "--yaw-deg), --pose-matrix, --trajectory, --auto-floor");
   }
+  {
+    RolePaths inputs = withRole("depth image", o.depths);
+    inputs.emplace_back("--camera file", o.camera.camera_file);
+    inputs.emplace_back("--trajectory file", o.trajectory);
+    RolePaths outputs;
+    for (const char* suffix : {"_obstacles.png", "_explored.png", "_layers.png", "_counts.npy"})
+      outputs.emplace_back(std::string("--out-prefix (its ") + suffix + ")", o.out_prefix + suffix);
+    requireDistinctFiles(inputs, outputs);
+  }
   HeightMapParams params;
   params.resolution = o.resolution;
   params.map_size = static_cast<std::size_t>(o.map_size);
@@ -163,9 +172,8 @@ void run(const HeightMapOptions& o) {
     map.addFrame(cloud, pose);
     seconds += secondsSince(t0);
   }
-  OutputSet outputs;
+  OutputSet outputs;  // committed once the report is printed
   writeImages(map, o.out_prefix, outputs);
-  outputs.commit();
 
   const HeightMapStatistics& s = map.statistics();
   nlohmann::json j = {{"frames", s.frames},
@@ -181,7 +189,7 @@ void run(const HeightMapOptions& o) {
                       {"seconds", seconds}};
   if (floors.size() > 1) j["floors"] = floors;
   if (o.format == "json") {
-    emit(j.dump(2) + "\n", "");
+    emit(j.dump(2) + "\n", outputs);
     return;
   }
   Table t({"frames", "points", "outside_map", "obstacle_cells", "explored_cells", "bin_counts"});
@@ -190,7 +198,7 @@ void run(const HeightMapOptions& o) {
   t.addRow({std::to_string(s.frames), std::to_string(s.valid_points),
             std::to_string(s.points_outside_map), std::to_string(map.obstacleCells()),
             std::to_string(map.exploredCells()), bins});
-  emitTable(t, o.format);
+  emitTable(t, o.format, outputs);
 }
 
 }  // namespace

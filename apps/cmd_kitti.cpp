@@ -174,7 +174,8 @@ void run(const KittiOptions& o) {
       outputs.insert(outputs.end(),
                      {{"--out-trinary", files.pgm}, {"--out-trinary (its .yaml)", files.yaml}});
     }
-    requireDistinctOutputs(outputs);
+    requireDistinctFiles(kittiInputs(o.root, o.sequence, frames, o.poses != "odometry"),
+                         outputs);
   }
   const KittiSequence seq{o.root, o.sequence};
   for (std::size_t f : frames) {  // every scan must exist before any work is done
@@ -244,7 +245,7 @@ void run(const KittiOptions& o) {
     throw InputError("the map is empty: no point fell within the range and height bands");
   }
   const pcl::PointCloud<pcl::PointXYZ> global = mapper.globalCloud();
-  OutputSet outputs;  // every output or none
+  OutputSet outputs;  // every output or none, committed once the report is printed
   if (!o.out_poses.empty()) {
     std::vector<Eigen::Isometry3d> out;
     for (const Eigen::Isometry3d& p : mapper.poses()) out.push_back(kittiPoseOfScan(p, tr, world));
@@ -271,7 +272,6 @@ void run(const KittiOptions& o) {
     }
     writeMapServer(image, mapper.config().min_hits, files);
   }
-  outputs.commit();
   const std::size_t occupied = mapper.occupiedCells();
   const double write_s = secondsSince(t);
 
@@ -312,7 +312,7 @@ void run(const KittiOptions& o) {
                          {"occupancy", occupancyJson(occupancy, reports)}})
                  .dump(2) +
              "\n",
-         "");
+         outputs);
     return;
   }
   Table tab({"frames", "points_read", "points_kept", "map_width", "map_height", "occupied_cells",
@@ -320,7 +320,7 @@ void run(const KittiOptions& o) {
   tab.addRow({std::to_string(frames.size()), std::to_string(read), std::to_string(kept),
               std::to_string(image.width), std::to_string(image.height), std::to_string(occupied),
               fixed(secondsSince(t_start), 3)});
-  emitTable(tab, o.format);
+  emitTable(tab, o.format, outputs);
 }
 
 }  // namespace

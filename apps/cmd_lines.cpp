@@ -1,4 +1,5 @@
-// metricmap lines FILE: Split & Merge segments of 2D laser scans (CSV, scan-per-line, CARMEN).
+// metricmap lines FILE: Split & Merge segments of 2D laser scans (CSV, scan-per-line, CARMEN;
+// plain, gzip or bzip2).
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -179,7 +180,7 @@ void addLinesCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("lines", "Split & Merge line segments of 2D laser scans");
   sub->add_option("file", o->file,
                   "Scan log: .csv (angle,range), one scan per line (--preset or --count), or "
-                  "CARMEN (FLASER/ROBOTLASER1)")
+                  "CARMEN (FLASER/ROBOTLASER1: .clf, .log); plain, gzip or bzip2")
       ->required();
   sub->add_option("--preset", o->preset, "Known log layout")
       ->check(CLI::IsMember({"urg04lx-mines"}));

@@ -78,6 +78,30 @@ std::string baseName(const std::string& path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
+/// What the exports of a .bt/.ot input build per expanded voxel, checked with the map against
+/// the budget before the tree is expanded (a 30-byte tree can stand for 2^27 voxels).
+OctomapUse exportUse(const OccupancyOptions& o) {
+  // OctoMap tree before pruning: a 16-byte leaf node (+ allocator overhead), its share of the
+  // parents' nodes and child arrays
+  constexpr std::uint64_t kOctomapNodeBytes = 48;
+  // a cloud point (16 bytes), the voxel centre (24) and the PCD writer's copy
+  constexpr std::uint64_t kCloudPointBytes = 64;
+  OctomapUse use;
+  std::string purpose;
+  for (const auto& [option, path] :
+       {std::pair<std::string, std::string>{"--out", o.out_bt}, {"--out-ot", o.out_ot}}) {
+    if (path.empty()) continue;
+    use.bytes_per_occupied_voxel = use.bytes_per_free_voxel = kOctomapNodeBytes;
+    purpose += (purpose.empty() ? "" : " and ") + option;
+  }
+  if (!o.out_cloud.empty()) {
+    use.bytes_per_occupied_voxel += kCloudPointBytes;
+    purpose += (purpose.empty() ? "" : " and ") + std::string("--out-cloud");
+  }
+  if (!purpose.empty()) use.purpose = "exported as " + purpose;
+  return use;
+}
+
 struct Totals : ScanCastTotals {
   double write_s = 0;
   double insert_cpu_s = -1;  ///< distributed: insert seconds summed over the ranks
@@ -141,12 +165,21 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
                                "the --band is along z: use --world velodyne for --out-map");
   std::pair<double, double> band{0, 0};
   if (!o.band.empty()) band = parseBand(o.band);
-  requireDistinctOutputs({{"--out", o.out_bt},
-                          {"--out-ot", o.out_ot},
-                          {"--out-cloud", o.out_cloud},
-                          {"--out-map", o.out_map},
-                          {"--out-map (its .yaml)", o.out_map.empty() ? "" : yamlOf(o.out_map)},
-                          {"--map-preview", o.map_preview}});
+  RolePaths inputs = withRole("input", o.inputs);
+  if (!from_file && o.inputs.size() == 1 && isDirectory(o.inputs[0]) && !o.frames.empty()) {
+    try {
+      inputs = kittiInputs(o.inputs[0], o.sequence, parseFrameList(o.frames), true);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--frames: ") + e.what());
+    }
+  }
+  requireDistinctFiles(inputs,
+                       {{"--out", o.out_bt},
+                        {"--out-ot", o.out_ot},
+                        {"--out-cloud", o.out_cloud},
+                        {"--out-map", o.out_map},
+                        {"--out-map (its .yaml)", o.out_map.empty() ? "" : yamlOf(o.out_map)},
+                        {"--map-preview", o.map_preview}});
   for (const auto& [option, path] :
        {std::pair<std::string, std::string>{"--out", o.out_bt}, {"--out-ot", o.out_ot}}) {
     if (!path.empty() && !endsWith(path, ".bt") && !endsWith(path, ".ot"))
@@ -169,7 +202,7 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
     throw UsageError(e.what());  // option values: a usage error
   }
   auto t = std::chrono::steady_clock::now();
-  LogOddsMap map = from_file ? readOctomapQuietly(o.inputs[0]) : LogOddsMap(params);
+  LogOddsMap map = from_file ? readOctomapQuietly(o.inputs[0], exportUse(o)) : LogOddsMap(params);
   if (from_file) tot.load_s = secondsSince(t);
   if (!from_file) castScans(o, ranks, map, tot);
   if (ranks.distributed()) {
@@ -182,7 +215,7 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
   t = std::chrono::steady_clock::now();
   TrinaryMap trinary;
   if (!o.out_map.empty()) trinary = projectBand(map, band.first, band.second);
-  OutputSet outputs;  // every output or none
+  OutputSet outputs;  // every output or none, committed once the report is printed
   if (!o.out_bt.empty()) writeOctomapQuietly(map, outputs.stage(o.out_bt));
   if (!o.out_ot.empty()) writeOctomapQuietly(map, outputs.stage(o.out_ot));
   if (!o.out_cloud.empty())
@@ -192,7 +225,6 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
     const std::string preview = o.map_preview.empty() ? "" : outputs.stage(o.map_preview);
     writeTrinaryMapServer(trinary, pgm, yaml, preview, baseName(o.out_map));
   }
-  outputs.commit();
   tot.write_s = secondsSince(t);
 
   const LogOddsMemory mem = map.memory();
@@ -220,7 +252,7 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
                   {"height", trinary.height},
                   {"occupied", trinary.occupied},
                   {"free", trinary.free}};
-    std::cout << j.dump(2) << "\n";
+    emit(j.dump(2) + "\n", outputs);
     return;
   }
   Table tab(
@@ -231,7 +263,7 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
   tab.addRow({std::to_string(tot.frames), std::to_string(tot.beams), std::to_string(tot.cut),
               std::to_string(map.knownVoxels()), std::to_string(occupied),
               std::to_string(map.knownVoxels() - occupied), bpv, ms});
-  emitTable(tab, "table");
+  emitTable(tab, "table", outputs);
 }
 
 }  // namespace

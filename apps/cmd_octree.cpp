@@ -25,7 +25,7 @@ struct OctreeOptions {
 };
 
 void runOctree(const OctreeOptions& o) {
-  requireDistinctOutputs({{"--out", o.out}, {"--leaves", o.leaves}});
+  requireDistinctFiles({{"input", o.file}}, {{"--out", o.out}, {"--leaves", o.leaves}});
   const LoadedCloud loaded = loadTimed(o.file);
   const auto& cloud = loaded.cloud;
 
@@ -39,11 +39,10 @@ void runOctree(const OctreeOptions& o) {
   octree.filter(means);
   const double octree_s = secondsSince(t1);
 
-  OutputSet outputs;
+  OutputSet outputs;  // committed once the report is printed
   if (!o.out.empty()) savePcdAtomic(outputs.stage(o.out), means, parsePcdFormat(o.pcd_format));
   if (!o.leaves.empty())
     writeTextAtomic(outputs.stage(o.leaves), octreeLeavesCsv(octree.getNodes()));
-  outputs.commit();
 
   const OctreeStatistics& s = octree.getStatistics();
   if (o.format == "json") {
@@ -54,7 +53,7 @@ void runOctree(const OctreeOptions& o) {
                         {"cubic_root", o.cubic},
                         {"octree", s},
                         {"seconds", {{"load", loaded.seconds}, {"octree", octree_s}}}};
-    emit(j.dump(2) + "\n", "");
+    emit(j.dump(2) + "\n", outputs);
     return;
   }
   Table t({"file", "max_points", "min_cell_size", "points", "total_nodes", "leaf_nodes",
@@ -65,7 +64,7 @@ void runOctree(const OctreeOptions& o) {
             std::to_string(s.internal_nodes), std::to_string(s.occupied_leaves),
             std::to_string(s.empty_leaves), fixed(s.mean_points_per_occupied_leaf, 2),
             std::to_string(s.max_depth)});
-  emitTable(t, o.format);
+  emitTable(t, o.format, outputs);
 }
 
 }  // namespace

@@ -65,9 +65,22 @@ bool isOctomapFile(const std::string& f) {
   return ext == ".bt" || ext == ".ot";
 }
 
+/// What one drawn voxel costs: its centre twice (the map's list, the request), VTK's point and
+/// height scalar, and the glyph mapper's per-cube matrix, colour and normal matrix on the way to
+/// the renderer. A tree of a few dozen bytes can stand for 2^27 voxels: checked before drawing.
+constexpr std::uint64_t kCubeBytes = 256;
+
+OctomapUse cubeUse(bool with_free) {
+  OctomapUse use;
+  use.bytes_per_occupied_voxel = kCubeBytes;
+  use.bytes_per_free_voxel = with_free ? kCubeBytes : 0;
+  use.purpose = with_free ? "occupied and free voxels drawn as cubes" : "drawn as cubes";
+  return use;
+}
+
 /// OctoMap .bt/.ot: occupied voxels (and free ones with --free) as cubes.
 void addOctomap(const std::string& f, bool with_free, viz::ViewRequest& request) {
-  const LogOddsMap map = readOctomapQuietly(f);
+  const LogOddsMap map = readOctomapQuietly(f, cubeUse(with_free));
   if (request.occupied.size > 0 && request.occupied.size != map.resolution()) {
     throw InputError(f + ": resolution " + std::to_string(map.resolution()) +
                      " differs from the other map's " + std::to_string(request.occupied.size));
@@ -96,6 +109,22 @@ void run(const ViewOptions& o) {
     throw CLI::ValidationError("--color-by",
                                "count needs --octree (points take their leaf's count)");
   }
+  {
+    RolePaths inputs = withRole("input", o.files);
+    inputs.emplace_back("--segments file", o.segments);
+    requireDistinctFiles(inputs, {{"--screenshot", o.screenshot}});
+  }
+  // Every OctoMap file's voxels, expanded and drawn, within the budget: checked from the trees'
+  // leaves before anything is expanded or a window opened.
+  std::uint64_t voxel_bytes = 0, voxels = 0;
+  for (const std::string& f : o.files) {
+    if (!isOctomapFile(f)) continue;
+    const OctomapExpansion e = inspectOctomapQuietly(f, cubeUse(o.free));
+    voxel_bytes += e.map_bytes + e.use_bytes;
+    voxels += o.free ? e.voxels : e.occupied_voxels;
+  }
+  checkMemory(voxel_bytes, 1,
+              "the OctoMap files' " + std::to_string(voxels) + " voxels drawn as cubes");
   const char* display = std::getenv("DISPLAY");
   if (display == nullptr || *display == '\0') {
     throw std::runtime_error(

@@ -17,5 +17,6 @@ void addKittiCommand(CLI::App& app);
 void addOdometryCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
 void addOccupancyCommand(CLI::App& app);
+void addEvaluateCommand(CLI::App& app);
 
 }  // namespace metricmap::cli

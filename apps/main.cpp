@@ -15,6 +15,8 @@
 #include "metricmap/version.h"
 
 int main(int argc, char** argv) {
+  // A closed stdout must not become the first output file's descriptor.
+  metricmap::cli::guardStandardStreams();
   // metricmap reports problems itself, one line each; PCL's own chatter would repeat them.
   pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
 
@@ -44,6 +46,7 @@ int main(int argc, char** argv) {
   metricmap::cli::addOdometryCommand(app);
   metricmap::cli::addViewCommand(app);
   metricmap::cli::addOccupancyCommand(app);
+  metricmap::cli::addEvaluateCommand(app);
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
     std::string names;  // from the registered commands, in registration order

@@ -6,7 +6,6 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include "metricmap/occupancy/octomap_io.h"
 
 namespace metricmap::cli {
 namespace {
@@ -38,9 +37,14 @@ class MuteStderr {
 
 }  // namespace
 
-LogOddsMap readOctomapQuietly(const std::string& path) {
+LogOddsMap readOctomapQuietly(const std::string& path, const OctomapUse& use) {
   MuteStderr mute;
-  return readOctomap(path);
+  return readOctomap(path, LogOddsParams(), use);
+}
+
+OctomapExpansion inspectOctomapQuietly(const std::string& path, const OctomapUse& use) {
+  MuteStderr mute;
+  return inspectOctomap(path, LogOddsParams(), use);
 }
 
 void writeOctomapQuietly(const LogOddsMap& map, const std::string& path) {

@@ -73,12 +73,10 @@ void dropNonFinite(pcl::PointCloud<PointT>& cloud, LoadReport& report) {
 
 }  // namespace
 
-template <typename PointT>
-LoadReport loadCloud(const std::string& path, pcl::PointCloud<PointT>& cloud) {
+LoadReport loadCloudBlob(const std::string& path, pcl::PCLPointCloud2& blob) {
   LoadReport report;
   report.path = path;
   requireRegularFile(path);
-  pcl::PCLPointCloud2 blob;
   const std::string ext = lowerExtension(path);
   if (ext == "pcd") {
     readPcd(path, blob, report);
@@ -100,6 +98,13 @@ LoadReport loadCloud(const std::string& path, pcl::PointCloud<PointT>& cloud) {
     throw InputError(path + ": no points (the file declares 0)");
   if (blob.point_step == 0 || blob.data.size() / blob.point_step < report.points_in_file)
     throw InputError(path + ": the point data is shorter than the declared point count");
+  return report;
+}
+
+template <typename PointT>
+LoadReport loadCloud(const std::string& path, pcl::PointCloud<PointT>& cloud) {
+  pcl::PCLPointCloud2 blob;
+  LoadReport report = loadCloudBlob(path, blob);
   pcl::fromPCLPointCloud2(blob, cloud);
   const double* v = report.viewpoint;  // the sensor pose (PCD VIEWPOINT; identity otherwise)
   cloud.sensor_origin_ = Eigen::Vector4f(static_cast<float>(v[0]), static_cast<float>(v[1]),

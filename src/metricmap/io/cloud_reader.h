@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include <pcl/PCLPointCloud2.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
@@ -19,6 +20,11 @@ namespace metricmap {
 /// \throws InputError (one line naming the file) for a missing, unreadable, malformed or
 /// truncated file, or one without x/y/z or without any finite point.
 /// \note Thread-safe.
+/// \brief The file's fields as pcl::io decoded them (.pcd, .ply, .bin), with x, y, z checked to be
+/// single float32 fields and the data as long as the declared points. NaN points are kept.
+/// \throws InputError (one line naming the file) as loadCloud
+LoadReport loadCloudBlob(const std::string& path, pcl::PCLPointCloud2& blob);
+
 template <typename PointT>
 LoadReport loadCloud(const std::string& path, pcl::PointCloud<PointT>& cloud);
 

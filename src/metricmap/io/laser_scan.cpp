@@ -2,13 +2,15 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
+#include "metricmap/common/memory_budget.h"
 #include "metricmap/common/parse_number.h"
 #include "metricmap/exceptions.h"
+#include "metricmap/io/carmen_log.h"
 #include "metricmap/io/input_file.h"
+#include "metricmap/io/text_stream.h"
 
 namespace metricmap {
 namespace {
@@ -16,30 +18,22 @@ namespace {
 constexpr double kDeg = M_PI / 180.0;
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::ifstream openText(const std::string& path) {
-  requireRegularFile(path);
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open");
-  return in;
+/// Lines of CARMEN logs: FLASER/ROBOTLASER1 within this many lines or bytes tell the format
+/// (Freiburg 079's first scan is on line 199, after its PARAM lines).
+constexpr std::size_t kDetectLines = 1000;
+constexpr std::uint64_t kDetectBytes = std::uint64_t{4} << 20;
+
+/// What a kept scan costs in memory, checked against the budget as scans accumulate (a
+/// compressed log can hold far more lines than its size suggests).
+void chargeScan(const std::string& path, const LaserScan& scan, std::uint64_t& bytes) {
+  bytes += sizeof(LaserScan) + 2 * sizeof(double) * scan.ranges.size();
+  checkMemory(bytes, 1, path + ": scans read so far");
 }
 
 /// Every number in a log goes through the checked parser; a refused token makes the line malformed.
 bool parseDouble(const std::string& s, double& v) {
   try {
     v = parseFiniteDouble(s, "scan value");
-    return true;
-  } catch (const std::invalid_argument&) {
-    return false;
-  }
-}
-
-/// A beam count: an integer in [1, available] (the tokens left on the line), never a cast of a
-/// double that may not fit.
-bool parseBeamCount(const std::string& s, std::size_t available, std::size_t& n) {
-  if (available == 0) return false;
-  try {
-    n = static_cast<std::size_t>(
-        parseInteger(s, "beam count", 1, static_cast<long long>(available)));
     return true;
   } catch (const std::invalid_argument&) {
     return false;
@@ -90,15 +84,17 @@ enum class LineKind { Scan, Malformed, Other };
 /// the line is malformed (counted, warned about) or something else (ignored).
 template <typename Parse>
 ScanLog readEachLine(const std::string& path, Parse parse) {
-  std::ifstream in = openText(path);
+  TextLineReader in(path);
   ScanLog log;
+  std::uint64_t bytes = 0;
   std::string line;
-  while (std::getline(in, line)) {
+  while (in.next(line)) {
     const std::vector<std::string> t = tokens(line);
     if (t.empty()) continue;
     LaserScan scan;
     switch (parse(t, scan)) {
       case LineKind::Scan:
+        chargeScan(path, scan, bytes);
         log.scans.push_back(std::move(scan));
         break;
       case LineKind::Malformed:
@@ -148,11 +144,11 @@ void validateScanLineFormat(const ScanLineFormat& f) {
 }
 
 ScanLog readAngleRangeCsv(const std::string& path) {
-  std::ifstream in = openText(path);
+  TextLineReader in(path);
   ScanLog log;
   LaserScan scan;
   std::string line;
-  for (std::size_t n = 1; std::getline(in, line); ++n) {
+  for (std::size_t n = 1; in.next(line); ++n) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.find_first_not_of(" \t") == std::string::npos) continue;
     const auto comma = line.find(',');
@@ -183,17 +179,23 @@ ScanLog readScanLines(const std::string& path, const ScanLineFormat& f) {
 
 bool looksLikeCarmen(const std::string& path) {
   requireRegularFile(path);
-  std::ifstream in(path);
-  std::string line;
-  for (int n = 0; n < 200 && std::getline(in, line); ++n) {
-    if (line.rfind("FLASER ", 0) == 0 || line.rfind("ROBOTLASER1 ", 0) == 0) return true;
+  try {
+    TextLineReader in(path);
+    std::string line;
+    for (std::size_t n = 0; n < kDetectLines && in.textBytes() <= kDetectBytes && in.next(line);
+         ++n) {
+      if (line.rfind("FLASER ", 0) == 0 || line.rfind("ROBOTLASER1 ", 0) == 0) return true;
+    }
+  } catch (const InputError&) {
+    // A file that cannot be read as text (binary, damaged stream): not a CARMEN log.
   }
   return false;
 }
 
 ScanLogKind detectScanLog(const std::string& path) {
   requireRegularFile(path);
-  if (path.size() > 4 && path.compare(path.size() - 4, 4, ".csv") == 0)
+  const std::string plain = withoutCompressionSuffix(path);
+  if (plain.size() > 4 && plain.compare(plain.size() - 4, 4, ".csv") == 0)
     return ScanLogKind::AngleRangeCsv;
   return looksLikeCarmen(path) ? ScanLogKind::Carmen : ScanLogKind::Unknown;
 }
@@ -206,6 +208,8 @@ ScanLog readScanLog(const std::string& path, const ScanLineFormat* lines_format)
     case ScanLogKind::Carmen:
       return readCarmenLog(path);
     case ScanLogKind::Unknown:
+      // A compressed log whose text could not be read: its reader names the damage.
+      if (detectCompression(path) != TextCompression::None) return readCarmenLog(path);
       break;
   }
   throw InputError(path +
@@ -214,31 +218,18 @@ ScanLog readScanLog(const std::string& path, const ScanLineFormat* lines_format)
 }
 
 ScanLog readCarmenLog(const std::string& path) {
-  return readEachLine(path, [](const std::vector<std::string>& t, LaserScan& scan) {
-    std::size_t n = 0;
-    bool ok = false;
-    if (t[0] == "FLASER") {
-      ok = t.size() >= 2 && parseBeamCount(t[1], t.size() - 2, n);
-      if (ok) {
-        const double step = (n % 2 == 1 && n > 1) ? M_PI / static_cast<double>(n - 1)
-                                                  : M_PI / static_cast<double>(n);
-        ok = t.size() >= 2 + n && fillRanges(t, 2, n, -M_PI / 2, step, 1.0, 0.0,
-                                             std::numeric_limits<double>::infinity(), scan);
-      }
-    } else if (t[0] == "ROBOTLASER1") {
-      double start = 0, fov = 0, res = 0, max_r = 0;
-      ok = t.size() >= 9 && parseDouble(t[2], start) && parseDouble(t[3], fov) &&
-           parseDouble(t[4], res) && parseDouble(t[5], max_r) &&
-           parseBeamCount(t[8], t.size() - 9, n) && res > 0.0;
-      if (ok) {
-        ok = t.size() >= 9 + n && fillRanges(t, 9, n, start, res, 1.0, 0.0,
-                                             max_r > 0.0 ? max_r * (1 - 1e-9) : INFINITY, scan);
-      }
-    } else {
-      return LineKind::Other;  // odometry, parameters, other sensors
-    }
-    return ok ? LineKind::Scan : LineKind::Malformed;
-  });
+  CarmenLogReader reader(path);
+  ScanLog log;
+  std::uint64_t bytes = 0;
+  CarmenLaser message;
+  while (reader.next(message)) {
+    chargeScan(path, message.scan, bytes);
+    log.scans.push_back(std::move(message.scan));
+  }
+  log.skipped_lines = reader.skippedLines();
+  warnSkipped(path, log);
+  requireScans(path, log);
+  return log;
 }
 
 pcl::PointCloud<pcl::PointXYZ> scanToCloud(const LaserScan& scan) {

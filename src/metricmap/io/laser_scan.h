@@ -1,7 +1,9 @@
 #pragma once
 /// \file laser_scan.h
 /// \brief 2D laser scans: readers for CSV "angle,range", one-scan-per-line logs (URG/Mines and
-/// generic), CARMEN FLASER/ROBOTLASER1 logs; conversion to an ordered PCL cloud.
+/// generic), CARMEN FLASER/ROBOTLASER1 logs; conversion to an ordered PCL cloud. Every reader
+/// takes plain, gzip or bzip2 files (TextLineReader: lines up to 1 MiB, scans charged to the
+/// memory budget).
 
 #include <cstddef>
 #include <limits>
@@ -54,24 +56,30 @@ ScanLog readAngleRangeCsv(const std::string& path);
 /// counted and warned about. \throws InputError when the file is unreadable or has no scan
 ScanLog readScanLines(const std::string& path, const ScanLineFormat& format);
 
-/// \brief CARMEN logs: FLASER (180 degrees from -90: step pi/(n-1) for an odd count such as
-/// 181 or 361, else pi/n) and ROBOTLASER1 (start, resolution and maximum range from the line);
-/// other lines are ignored. \throws InputError when the file is unreadable or has no scan
+/// \brief CARMEN logs (carmen_log.h; plain, .gz or .bz2): the beams of every FLASER (180
+/// degrees from -90: step pi/(n-1) for an odd count such as 181 or 361, else pi/n) and
+/// ROBOTLASER1 (start, resolution and maximum range from the line); other lines are ignored,
+/// malformed scan lines skipped, counted and warned about. Stamps and odometry: CarmenLogReader.
+/// \throws InputError when the file is unreadable or damaged or has no scan
+/// \throws CapacityError when the scans do not fit in the memory budget
 ScanLog readCarmenLog(const std::string& path);
 
-/// \brief True when the file has FLASER or ROBOTLASER1 lines (checks the first 200 lines).
+/// \brief True when the (decompressed) file has a FLASER or ROBOTLASER1 line within its first
+/// 1000 lines or 4 MiB; false too for a file that cannot be read as text (damaged stream, a
+/// line over 1 MiB). \throws InputError unless `path` is a readable regular file
 bool looksLikeCarmen(const std::string& path);
 
 /// \brief The layout of a 2D scan log, told from the file when not given.
 enum class ScanLogKind { Unknown, AngleRangeCsv, Carmen };
 
-/// \brief .csv -> AngleRangeCsv; FLASER/ROBOTLASER1 lines -> Carmen; else Unknown (a
-/// scan-per-line log needs its ScanLineFormat). \throws InputError for a file that is not a
-/// readable regular file
+/// \brief .csv (also .csv.gz, .csv.bz2) -> AngleRangeCsv; FLASER/ROBOTLASER1 lines -> Carmen;
+/// else Unknown (a scan-per-line log needs its ScanLineFormat). \throws InputError for a file
+/// that is not a readable regular file
 ScanLogKind detectScanLog(const std::string& path);
 
 /// \brief Read a scan log: with `lines_format`, one scan per line in that layout; without, the
-/// layout detectScanLog finds. \throws InputError naming the file when the layout cannot be
+/// layout detectScanLog finds (a compressed file whose text cannot be told is read as CARMEN, so
+/// that its damage is named). \throws InputError naming the file when the layout cannot be
 /// told or the file is bad
 ScanLog readScanLog(const std::string& path, const ScanLineFormat* lines_format = nullptr);
 

@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "metricmap/io/atomic_file.h"
+#include "metricmap/io/file_identity.h"
 
 namespace metricmap {
 namespace {
@@ -42,14 +43,19 @@ void checkOutputPath(const std::string& path) {
 
 OutputSet::~OutputSet() {
   std::error_code ec;
-  for (const Staged& s : staged_) fs::remove_all(s.temporary, ec);
+  for (const Staged& s : staged_) {
+    fs::remove_all(s.temporary, ec);
+    forgetTemporary(s.temporary);
+  }
 }
 
 std::string OutputSet::stage(const std::string& path) {
   checkOutputPath(path);
   checkParent(path);
+  const FileIdentity id = fileIdentity(path);
   for (const Staged& s : staged_) {
-    if (s.destination == path) throw std::runtime_error(path + ": named for two outputs");
+    if (s.destination == path || sameFile(id, fileIdentity(s.destination)))
+      throw std::runtime_error(path + ": named for two outputs (also as '" + s.destination + "')");
   }
   staged_.push_back({temporaryPathFor(path), path, false});
   return staged_.back().temporary;
@@ -60,6 +66,7 @@ std::string OutputSet::stageDirectory(const std::string& path) {
   const bool exists = fs::exists(path, ec);
   if (exists && !fs::is_directory(path, ec))
     throw std::runtime_error(path + ": exists and is not a directory");
+  removeStaleTemporaries(path);  // what a killed run left
   std::string tmp;
   if (exists) {
     tmp = (fs::path(path) / (".tmp-" + std::to_string(::getpid()))).string();
@@ -71,6 +78,7 @@ std::string OutputSet::stageDirectory(const std::string& path) {
   }
   if (!fs::create_directory(tmp, ec) || ec)
     throw std::runtime_error(path + ": cannot create a directory here (" + ec.message() + ")");
+  registerTemporary(tmp, /*directory=*/true);
   staged_.push_back({tmp, path, true});
   return tmp;
 }
@@ -86,11 +94,13 @@ void OutputSet::commit() {
     if (!s.directory) {
       if (std::rename(s.temporary.c_str(), s.destination.c_str()) != 0)
         throw std::runtime_error(s.destination + ": cannot write (" + std::strerror(errno) + ")");
+      forgetTemporary(s.temporary);
       continue;
     }
     if (!fs::exists(s.destination, ec)) {
       fs::rename(s.temporary, s.destination, ec);
       if (ec) throw std::runtime_error(s.destination + ": cannot write (" + ec.message() + ")");
+      forgetTemporary(s.temporary);
       continue;
     }
     for (const fs::directory_entry& e : fs::directory_iterator(s.temporary, ec)) {
@@ -100,6 +110,7 @@ void OutputSet::commit() {
       if (ec) throw std::runtime_error(to.string() + ": cannot write (" + ec.message() + ")");
     }
     fs::remove_all(s.temporary, ec);
+    forgetTemporary(s.temporary);
   }
   staged_.clear();
 }

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "metricmap/common/memory_budget.h"
+#include "metricmap/exceptions.h"
 #include "metricmap/io/map_server.h"
 
 namespace metricmap {
@@ -34,9 +36,22 @@ TrinaryMap projectBand(const LogOddsMap& map, double z_min, double z_max) {
     msg << "no observed voxel has its centre in the height band " << z_min << ".." << z_max;
     throw std::invalid_argument(msg.str());
   }
+  // the image spans the band's voxels: two far-apart voxels (a few dozen bytes of .bt) ask for
+  // 65536 x 65536 cells; the cells, their copy for the writers and a preview, within the budget
+  const std::uint64_t w = static_cast<std::uint64_t>(x1 - x0) + 1;
+  const std::uint64_t h = static_cast<std::uint64_t>(y1 - y0) + 1;
+  {
+    std::ostringstream what;
+    what << "the trinary map of the band " << z_min << ".." << z_max << " (" << w << " x " << h
+         << " cells of " << res << " m)";
+    if (w > static_cast<std::uint64_t>(std::numeric_limits<int>::max()) ||
+        h > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
+      throw CapacityError(what.str() + " is wider than an image can be");
+    checkMemory(w * h, 4, what.str());
+  }
   TrinaryMap m;
-  m.width = static_cast<int>(x1 - x0 + 1);
-  m.height = static_cast<int>(y1 - y0 + 1);
+  m.width = static_cast<int>(w);
+  m.height = static_cast<int>(h);
   m.resolution = res;
   m.origin_x = static_cast<double>(x0) * res;
   m.origin_y = static_cast<double>(y0) * res;

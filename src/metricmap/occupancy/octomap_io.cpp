@@ -77,8 +77,23 @@ void writeOctomap(const LogOddsMap& map, const std::string& path) {
   writeTextAtomic(path, out.str());
 }
 
-LogOddsMap readOctomap(const std::string& path, const LogOddsParams& params,
-                       std::size_t max_voxels) {
+namespace {
+
+std::uint64_t saturatingProduct(std::uint64_t a, std::uint64_t b) {
+  if (a != 0 && b > std::numeric_limits<std::uint64_t>::max() / a)
+    return std::numeric_limits<std::uint64_t>::max();
+  return a * b;
+}
+
+std::uint64_t saturatingSum(std::uint64_t a, std::uint64_t b) {
+  return b > std::numeric_limits<std::uint64_t>::max() - a ? std::numeric_limits<std::uint64_t>::max()
+                                                           : a + b;
+}
+
+/// Reads and checks the file, counts what its leaves expand to, checks that and `use` against
+/// the budget; expands the leaves into the returned map only when `expand`.
+LogOddsMap readTree(const std::string& path, const LogOddsParams& params, const OctomapUse& use,
+                    std::size_t max_voxels, OctomapExpansion* expansion, bool expand) {
   // a regular file only (a FIFO blocks, /dev/zero never ends), read up to its size, in budget
   const std::string bytes = readRegularFile(path, std::numeric_limits<std::uint64_t>::max());
   const OctomapFileInfo info = checkOctomapBytes(bytes, path);
@@ -103,13 +118,14 @@ LogOddsMap readOctomap(const std::string& path, const LogOddsParams& params,
   // expansion budget first: a leaf at depth d covers 8^(16 - d) voxels
   // blocks: a leaf of 8^3 voxels or more tiles its own; smaller leaves share theirs (counted
   // once through their sorted block keys)
-  std::size_t total = 0, blocks = 0;
+  std::size_t total = 0, blocks = 0, occupied = 0;
   std::vector<std::uint64_t> small_leaf_blocks;
   const unsigned max_depth = tree->getTreeDepth();
   for (auto it = tree->begin_leafs(), end = tree->end_leafs(); it != end; ++it) {
     const unsigned levels = max_depth - it.getDepth();
     if (levels >= 10) throw CapacityError(path + ": a leaf covers more than 2^30 voxels");
     total += std::size_t{1} << (3 * levels);
+    if (map.isOccupied(it->getLogOdds())) occupied += std::size_t{1} << (3 * levels);
     if (levels >= 3) {
       blocks += std::size_t{1} << (3 * (levels - 3));
     } else {
@@ -127,10 +143,23 @@ LogOddsMap readOctomap(const std::string& path, const LogOddsParams& params,
   blocks += static_cast<std::size_t>(
       std::unique(small_leaf_blocks.begin(), small_leaf_blocks.end()) - small_leaf_blocks.begin());
   small_leaf_blocks = std::vector<std::uint64_t>();
-  // the map's blocks (and their hash slots) against the memory budget, before the expansion
-  checkMemory(
-      blocks, 2 * sizeof(detail::VoxelBlock) + 16,
-      path + " (" + std::to_string(total) + " voxels in " + std::to_string(blocks) + " blocks)");
+  // the map's blocks (and their hash slots) and what the caller builds from the voxels, against
+  // the memory budget, before the expansion
+  OctomapExpansion e;
+  e.voxels = total;
+  e.occupied_voxels = occupied;
+  e.free_voxels = total - occupied;
+  e.blocks = blocks;
+  e.map_bytes = saturatingProduct(blocks, 2 * sizeof(detail::VoxelBlock) + 16);
+  e.use_bytes = saturatingSum(saturatingProduct(e.occupied_voxels, use.bytes_per_occupied_voxel),
+                              saturatingProduct(e.free_voxels, use.bytes_per_free_voxel));
+  if (expansion != nullptr) *expansion = e;
+  std::string what = path + " (" + std::to_string(total) + " voxels, " +
+                     std::to_string(occupied) + " occupied, in " + std::to_string(blocks) +
+                     " blocks";
+  if (!use.purpose.empty()) what += ", " + use.purpose;
+  checkMemory(saturatingSum(e.map_bytes, e.use_bytes), 1, what + ")");
+  if (!expand) return map;
   for (auto it = tree->begin_leafs(), end = tree->end_leafs(); it != end; ++it) {
     const octomap::OcTreeKey base = it.getIndexKey();
     const std::int64_t edge = std::int64_t{1} << (max_depth - it.getDepth());
@@ -145,6 +174,26 @@ LogOddsMap readOctomap(const std::string& path, const LogOddsParams& params,
     }
   }
   return map;
+}
+
+}  // namespace
+
+LogOddsMap readOctomap(const std::string& path, const LogOddsParams& params,
+                       std::size_t max_voxels) {
+  return readTree(path, params, OctomapUse(), max_voxels, nullptr, true);
+}
+
+LogOddsMap readOctomap(const std::string& path, const LogOddsParams& params,
+                       const OctomapUse& use, std::size_t max_voxels,
+                       OctomapExpansion* expansion) {
+  return readTree(path, params, use, max_voxels, expansion, true);
+}
+
+OctomapExpansion inspectOctomap(const std::string& path, const LogOddsParams& params,
+                                const OctomapUse& use, std::size_t max_voxels) {
+  OctomapExpansion e;
+  readTree(path, params, use, max_voxels, &e, false);
+  return e;
 }
 
 }  // namespace metricmap

@@ -29,7 +29,9 @@ const LidarOdometryConfig& validated(const LidarOdometryConfig& c) {
   for (auto [v, name] :
        {std::pair{c.min_threshold, "min_threshold"}, std::pair{c.min_deviation, "min_deviation"},
         std::pair{c.degeneracy_ratio, "degeneracy_ratio"},
-        std::pair{c.min_inlier_fraction, "min_inlier_fraction"}}) {
+        std::pair{c.min_inlier_fraction, "min_inlier_fraction"},
+        std::pair{c.max_threshold, "max_threshold"},
+        std::pair{c.coarse_voxel_size, "coarse_voxel_size"}}) {
     if (!(std::isfinite(v) && v >= 0.0)) {
       throw std::invalid_argument(std::string(name) + " must be a finite number >= 0, got " +
                                   std::to_string(v));
@@ -45,11 +47,12 @@ const LidarOdometryConfig& validated(const LidarOdometryConfig& c) {
   return c;
 }
 
-PointToPointIcpParams icpParams(const LidarOdometryConfig& c, double threshold) {
+PointToPointIcpParams icpParams(const LidarOdometryConfig& c, double threshold,
+                                double convergence) {
   PointToPointIcpParams p;
   p.threshold = threshold;
   p.max_iterations = c.max_iterations;
-  p.convergence = c.convergence;
+  p.convergence = convergence;
   p.degeneracy_ratio = c.degeneracy_ratio;
   p.threads = c.threads;
   return p;
@@ -61,12 +64,18 @@ LidarOdometry::LidarOdometry(const LidarOdometryConfig& config)
     : config_(validated(config)),
       map_(config.voxel_size, config.max_points_per_voxel),
       threshold_(config.initial_threshold, config.min_threshold, config.min_deviation,
-                 config.max_range) {}
+                 config.max_range),
+      coarse_map_(config.coarse_voxel_size > 0.0 ? config.coarse_voxel_size : 1.0,
+                  config.max_points_per_voxel),
+      coarse_threshold_(config.initial_threshold, config.min_threshold, config.min_deviation,
+                        config.max_range) {}
 
 void LidarOdometry::reset() {
   map_.clear();
   threshold_ = AdaptiveThreshold(config_.initial_threshold, config_.min_threshold,
                                  config_.min_deviation, config_.max_range);
+  coarse_map_.clear();
+  coarse_threshold_ = threshold_;
   poses_.clear();
 }
 
@@ -137,44 +146,43 @@ OdometryResult LidarOdometry::registerScan(const Scan& points, const std::vector
   voxelDownsample(frame, 1.5 * config_.voxel_size, source_);
   const std::vector<Eigen::Vector3d>& source = source_;
   res.points_source = source.size();
+  const bool coarse = config_.coarse_voxel_size > 0.0;
+  if (coarse) {
+    voxelDownsample(frame, 0.5 * config_.coarse_voxel_size, coarse_frame_);
+    voxelDownsample(coarse_frame_, 1.5 * config_.coarse_voxel_size, coarse_source_);
+  }
 
   if (poses_.empty()) {  // the first scan defines the world
     res.pose = res.prediction = Eigen::Isometry3d::Identity();
   } else {
     const Eigen::Isometry3d& last = poses_.back();
     res.prediction = last * velocity;
+    Eigen::Isometry3d initial = res.prediction;
+    if (coarse) {
+      const double threshold = coarse_threshold_.threshold();
+      const PointToPointIcpResult c = alignWithRecovery(coarse_source_, coarse_map_, initial,
+                                                        &last, threshold, 0.0, config_.convergence, res.restarted);
+      Eigen::Isometry3d deviation;
+      deviation.matrix() = initial.matrix().inverse() * c.pose.matrix();
+      coarse_threshold_.update(deviation);
+      initial = c.pose;
+      res.coarse_iterations = c.iterations;
+    }
+    res.coarse = initial;
     res.threshold = threshold_.threshold();
-    PointToPointIcpResult icp =
-        alignPointToPoint(source, map_, res.prediction, icpParams(config_, res.threshold), &icp_);
-    const double need = config_.min_inlier_fraction * static_cast<double>(source.size());
-    if (static_cast<double>(icp.correspondences) < need && poses_.size() >= 2) {
-      // The prediction is off by more than the threshold (an abrupt stop, a reversal, a
-      // jolt): start again from the last pose with the initial, wide threshold.
-      const double wide = std::max(3.0 * config_.initial_threshold, res.threshold);
-      PointToPointIcpResult again =
-          alignPointToPoint(source, map_, last, icpParams(config_, wide), &icp_);
-      // Compare both at the same (narrow) threshold.
-      const PointToPointIcpResult check =
-          alignPointToPoint(source, map_, again.pose, icpParams(config_, res.threshold), &icp_);
-      if (check.correspondences > icp.correspondences) {
-        icp = check;
-        icp.iterations += again.iterations;
-        res.restarted = true;
-      }
-    }
-    if (config_.fine_threshold > 0.0 && res.threshold > config_.fine_threshold) {
-      const int before = icp.iterations;
-      icp = alignPointToPoint(source, map_, icp.pose, icpParams(config_, config_.fine_threshold),
-                              &icp_);
-      icp.iterations += before;
-    }
+    if (config_.max_threshold > 0.0) res.threshold = std::min(res.threshold, config_.max_threshold);
+    // Without a coarse stage the fine one recovers from a bad prediction itself; after one, its
+    // guess is already the coarse map's answer.
+    const PointToPointIcpResult icp =
+        alignWithRecovery(source, map_, initial, coarse ? nullptr : &last, res.threshold,
+                          config_.max_threshold, config_.convergence, res.restarted);
     res.pose = icp.pose;
     res.correspondences = icp.correspondences;
     res.iterations = icp.iterations;
     res.degenerate_directions = icp.degenerate_directions;
     res.eigen_ratio = icp.eigen_ratio;
-    Eigen::Isometry3d deviation;
-    deviation.matrix() = res.prediction.matrix().inverse() * res.pose.matrix();
+    Eigen::Isometry3d deviation;  // from the guess the fine ICP started at
+    deviation.matrix() = initial.matrix().inverse() * res.pose.matrix();
     threshold_.update(deviation);
   }
   // Keep the rotation orthonormal over long runs.
@@ -184,7 +192,46 @@ OdometryResult LidarOdometry::registerScan(const Scan& points, const std::vector
   for (Eigen::Vector3d& p : frame) p = res.pose * p;
   map_.add(frame);
   map_.removeFar(res.pose.translation(), config_.max_range);
+  if (coarse) {
+    for (Eigen::Vector3d& p : coarse_frame_) p = res.pose * p;
+    coarse_map_.add(coarse_frame_);
+    coarse_map_.removeFar(res.pose.translation(), config_.max_range);
+  }
   return res;
+}
+
+PointToPointIcpResult LidarOdometry::alignWithRecovery(const std::vector<Eigen::Vector3d>& source,
+                                                       const VoxelHashMap& map,
+                                                       const Eigen::Isometry3d& initial,
+                                                       const Eigen::Isometry3d* last,
+                                                       double threshold, double cap,
+                                                       double convergence, bool& restarted) {
+  PointToPointIcpResult icp =
+      alignPointToPoint(source, map, initial, icpParams(config_, threshold, convergence), &icp_);
+  const double need = config_.min_inlier_fraction * static_cast<double>(source.size());
+  if (last && static_cast<double>(icp.correspondences) < need && poses_.size() >= 2) {
+    // The prediction is off by more than the threshold (an abrupt stop, a reversal, a
+    // jolt): start again from the last pose with the initial, wide threshold.
+    double wide = std::max(3.0 * config_.initial_threshold, threshold);
+    if (cap > 0.0) wide = std::min(wide, cap);
+    PointToPointIcpResult again =
+        alignPointToPoint(source, map, *last, icpParams(config_, wide, convergence), &icp_);
+    // Compare both at the same (narrow) threshold.
+    const PointToPointIcpResult check =
+        alignPointToPoint(source, map, again.pose, icpParams(config_, threshold, convergence), &icp_);
+    if (check.correspondences > icp.correspondences) {
+      icp = check;
+      icp.iterations += again.iterations;
+      restarted = true;
+    }
+  }
+  if (config_.fine_threshold > 0.0 && threshold > config_.fine_threshold) {
+    const int before = icp.iterations;
+    icp = alignPointToPoint(source, map, icp.pose, icpParams(config_, config_.fine_threshold, convergence),
+                            &icp_);
+    icp.iterations += before;
+  }
+  return icp;
 }
 
 }  // namespace metricmap

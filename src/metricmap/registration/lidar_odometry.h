@@ -36,6 +36,9 @@ struct OdometryResult {
   double eigen_ratio = 0.0;
   bool restarted =
       false;  ///< registered again from zero motion (the prediction found too few pairs)
+  /// \brief Where the coarse stage put the scan (the prediction when there is none).
+  Eigen::Isometry3d coarse = Eigen::Isometry3d::Identity();
+  int coarse_iterations = 0;  ///< Gauss-Newton steps of the coarse stage
 };
 
 /// \brief Scans in, poses out. Give the scans in acquisition order, each in its sensor frame;
@@ -67,6 +70,14 @@ class LidarOdometry {
   void reset();
 
  private:
+  /// ICP from `initial` with the threshold; registered again from `last` (when given) with a
+  /// wide threshold (at most `cap` when > 0) when too few pairs are found; then refined with
+  /// the fine threshold when the threshold is wider.
+  PointToPointIcpResult alignWithRecovery(const std::vector<Eigen::Vector3d>& source,
+                                          const VoxelHashMap& map,
+                                          const Eigen::Isometry3d& initial,
+                                          const Eigen::Isometry3d* last, double threshold,
+                                          double cap, double convergence, bool& restarted);
   template <class Scan>
   OdometryResult registerScan(const Scan& points, const std::vector<double>& times,
                               const std::string& name);
@@ -80,6 +91,11 @@ class LidarOdometry {
   std::vector<Eigen::Vector3d> frame_;
   std::vector<int> first_idx_;
   std::vector<Eigen::Vector3d> source_;
+  // The coarse stage (config_.coarse_voxel_size > 0): its map, threshold, source and the
+  // frame it adds to its map.
+  VoxelHashMap coarse_map_;
+  AdaptiveThreshold coarse_threshold_;
+  std::vector<Eigen::Vector3d> coarse_source_, coarse_frame_;
   PointToPointIcpWorkspace icp_;
 };
 

@@ -49,6 +49,16 @@ struct LidarOdometryConfig {
   /// few dozen points (a truncated or filtered file) constrains no pose, so it is refused
   /// naming the frame rather than registered to noise. A real sweep has ~100k.
   int min_points = 100;
+  /// \brief Upper bound of the correspondence threshold (m); 0: none. The map is searched in
+  /// the 27 voxels around a point, so pairs much farther than a voxel are not found anyway, and
+  /// a threshold grown by a sharp turn (its rotation error times the range) only slows the ICP
+  /// and widens its robust kernel.
+  double max_threshold = 0.0;
+  /// \brief Voxel (m) of a second, coarser local map; 0: none. When set, each scan is first
+  /// registered on the coarse map from the motion model's prediction (a wide basin: it follows
+  /// turns of tens of degrees the prediction misses), then on the fine map from there (the
+  /// accuracy of the fine voxel). For sensors that turn faster than a car (hand-carried).
+  double coarse_voxel_size = 0.0;
   /// \brief Threads for the scan-to-map pairing (0: all hardware threads), kept by the object
   /// from scan to scan. The poses do not depend on it: the normal equations are summed in a
   /// fixed order.

@@ -1,0 +1,64 @@
+#include "metricmap/datasets/scan_source.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <stdexcept>
+#include <system_error>
+
+#include "metricmap/datasets/carmen_source.h"
+#include "metricmap/datasets/folder_source.h"
+#include "metricmap/datasets/kitti_source.h"
+#include "metricmap/exceptions.h"
+
+namespace metricmap {
+namespace fs = std::filesystem;
+namespace {
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+bool looksLikeLaserLog(const std::string& path) {
+  const std::string p = lower(path);
+  for (const char* z : {"", ".gz", ".bz2"}) {
+    for (const char* e : {".clf", ".log"}) {
+      if (endsWith(p, std::string(e) + z)) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+std::unique_ptr<ScanSource> openScanSource(const std::string& path,
+                                           const ScanSourceOptions& options) {
+  const std::string& f = options.format;
+  if (f != "auto" && f != "kitti" && f != "folder" && f != "carmen") {
+    throw std::invalid_argument("source format must be auto, kitti, folder or carmen, got '" + f +
+                                "'");
+  }
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path + ": no such file or folder");
+  const bool dir = fs::is_directory(path, ec);
+  if (f == "kitti" || (f == "auto" && dir && looksLikeKittiRoot(path))) {
+    if (!dir) throw InputError(path + ": a KITTI root must be a folder");
+    return openKittiSource(path, options);
+  }
+  if (f == "carmen" || (f == "auto" && !dir && looksLikeLaserLog(path))) {
+    if (dir) throw InputError(path + ": a CARMEN log is a file, not a folder");
+    return openCarmenSource(path);
+  }
+  if (f == "folder" || dir || endsWith(lower(path), ".txt")) return openFolderSource(path, options);
+  throw InputError(path +
+                   ": not a scan source (a KITTI root, a folder of .pcd/.ply/.bin/.npy scans, a "
+                   ".txt list of scans or a CARMEN .clf/.log[.gz|.bz2] log)");
+}
+
+}  // namespace metricmap

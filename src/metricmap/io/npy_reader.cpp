@@ -1,0 +1,94 @@
+#include "metricmap/io/npy_reader.h"
+
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <regex>
+
+#include "metricmap/exceptions.h"
+#include "metricmap/io/input_file.h"
+
+namespace metricmap {
+namespace {
+
+constexpr std::uint64_t kMaxNpyBytes = std::uint64_t{1} << 34;  // 16 GiB: larger is not a scan
+
+std::size_t parseDimension(const std::string& path, const std::string& text) {
+  if (text.empty() || text.size() > 18 || text.find_first_not_of("0123456789") != std::string::npos)
+    throw InputError(path + ": bad shape entry '" + text + "' in the .npy header");
+  return static_cast<std::size_t>(std::stoull(text));
+}
+
+}  // namespace
+
+NpyArray readNpyPoints(const std::string& path) {
+  const std::string bytes = readRegularFile(path, kMaxNpyBytes);
+  static const char kMagic[] = "\x93NUMPY";
+  if (bytes.size() < 10 || bytes.compare(0, 6, kMagic, 6) != 0)
+    throw InputError(path + ": not a .npy file (bad magic)");
+  const auto major = static_cast<unsigned char>(bytes[6]);
+  std::size_t header_len = 0, header_at = 0;
+  if (major == 1) {
+    header_len = static_cast<unsigned char>(bytes[8]) |
+                 (static_cast<std::size_t>(static_cast<unsigned char>(bytes[9])) << 8);
+    header_at = 10;
+  } else if (major == 2 || major == 3) {
+    if (bytes.size() < 12) throw InputError(path + ": truncated .npy header");
+    for (int i = 0; i < 4; ++i) {
+      header_len |= static_cast<std::size_t>(static_cast<unsigned char>(bytes[8 + i])) << (8 * i);
+    }
+    header_at = 12;
+  } else {
+    throw InputError(path + ": unsupported .npy version " + std::to_string(major));
+  }
+  if (header_len > bytes.size() - header_at) throw InputError(path + ": truncated .npy header");
+  const std::string header = bytes.substr(header_at, header_len);
+  const std::size_t data_at = header_at + header_len;
+
+  std::smatch m;
+  static const std::regex descr_re("'descr'\\s*:\\s*'([^']*)'");
+  static const std::regex fortran_re("'fortran_order'\\s*:\\s*(True|False)");
+  static const std::regex shape_re("'shape'\\s*:\\s*\\(\\s*([0-9]*)\\s*,\\s*([0-9]*)\\s*,?\\s*\\)");
+  if (!std::regex_search(header, m, descr_re)) throw InputError(path + ": .npy header has no descr");
+  const std::string descr = m[1];
+  std::size_t item = 0;
+  if (descr == "<f4") {
+    item = 4;
+  } else if (descr == "<f8") {
+    item = 8;
+  } else {
+    throw InputError(path + ": .npy dtype '" + descr +
+                     "' is not a little-endian float32/float64 ('<f4', '<f8')");
+  }
+  if (!std::regex_search(header, m, fortran_re))
+    throw InputError(path + ": .npy header has no fortran_order");
+  if (m[1] == "True") throw InputError(path + ": Fortran-ordered .npy arrays are not read");
+  if (!std::regex_search(header, m, shape_re))
+    throw InputError(path + ": .npy shape is not (N, C): a 2-D point array is expected");
+  NpyArray a;
+  a.rows = parseDimension(path, m[1]);
+  a.cols = parseDimension(path, m[2]);
+  if (a.cols < 3 || a.cols > 64)
+    throw InputError(path + ": .npy shape (" + std::to_string(a.rows) + ", " +
+                     std::to_string(a.cols) + ") has not 3 to 64 columns (x y z ...)");
+  const std::size_t available = bytes.size() - data_at;
+  if (a.rows > available / (a.cols * item) || a.rows * a.cols * item != available) {
+    throw InputError(path + ": .npy data (" + std::to_string(available) +
+                     " bytes) does not match the shape (" + std::to_string(a.rows) + ", " +
+                     std::to_string(a.cols) + ")");
+  }
+  a.values.resize(a.rows * a.cols);
+  const char* data = bytes.data() + data_at;
+  for (std::size_t i = 0; i < a.values.size(); ++i) {
+    if (item == 4) {
+      float f;
+      std::memcpy(&f, data + 4 * i, 4);
+      a.values[i] = f;
+    } else {
+      std::memcpy(&a.values[i], data + 8 * i, 8);
+    }
+  }
+  return a;
+}
+
+}  // namespace metricmap

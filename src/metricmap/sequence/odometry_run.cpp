@@ -1,0 +1,151 @@
+#include "metricmap/sequence/odometry_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "metricmap/registration/deskew.h"
+#include "metricmap/registration/scan_registration.h"
+
+namespace metricmap {
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
+Eigen::Isometry3d inverseOf(const Eigen::Isometry3d& t) {
+  Eigen::Isometry3d i;
+  i.matrix() = t.matrix().inverse();  // KITTI's Tr is orthonormal only to ~1e-7
+  return i;
+}
+
+std::vector<std::size_t> selectFrames(const std::vector<std::size_t>& frames, std::size_t n) {
+  if (frames.empty()) {
+    std::vector<std::size_t> all(n);
+    for (std::size_t i = 0; i < n; ++i) all[i] = i;
+    return all;
+  }
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    if (frames[k] >= n) {
+      throw std::invalid_argument("frame " + std::to_string(frames[k]) + " is past the last scan (" +
+                                  std::to_string(n) + " scans)");
+    }
+    if (k > 0 && frames[k] <= frames[k - 1]) {
+      throw std::invalid_argument("frames must be in acquisition order without repeats: " +
+                                  std::to_string(frames[k]) + " follows " +
+                                  std::to_string(frames[k - 1]));
+    }
+  }
+  return frames;
+}
+
+// Per-point times as fractions of the sweep, for deskew.
+std::vector<double> sweepFractions(const Scan& scan, DeskewMode mode, bool& used) {
+  used = false;
+  if (mode == DeskewMode::Off) return {};
+  if (mode == DeskewMode::Azimuth) {
+    used = true;
+    return azimuthTimes(toPoints3d(scan.points));
+  }
+  if (scan.point_times.empty()) return {};
+  const double span = *std::max_element(scan.point_times.begin(), scan.point_times.end());
+  if (!(span > 0.0)) return {};
+  std::vector<double> t(scan.point_times.size());
+  for (std::size_t i = 0; i < t.size(); ++i) t[i] = scan.point_times[i] / span;
+  used = true;
+  return t;
+}
+
+}  // namespace
+
+OdometryRun runOdometry(ScanSource& source, const OdometryRunOptions& options,
+                        const OdometryObserver& observer) {
+  const std::vector<std::size_t> frames = selectFrames(options.frames, source.size());
+  const SourceInfo& info = source.info();
+  OdometryRun run;
+  const bool kitti = info.kind == "kitti";
+  run.convention = kitti ? "kitti camera 0" : "sensor";
+  // Output convention: A P A^-1 (A = Tr for KITTI: velodyne poses -> camera 0 poses).
+  const Eigen::Isometry3d a = kitti ? info.sensor_to_base : Eigen::Isometry3d::Identity();
+  const Eigen::Isometry3d a_inv = inverseOf(a);
+  const bool has_ref = info.reference.size() >= source.size();
+
+  std::optional<LidarOdometry> odometry;
+  std::vector<Eigen::Isometry3d> ref_out;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    auto t = std::chrono::steady_clock::now();
+    Scan scan = source.scan(frames[k]);
+    run.read_seconds += msSince(t) * 1e-3;
+    if (!odometry) {
+      LidarOdometryConfig config = options.config;
+      const SensorProfileRequest& req = options.profile;
+      if (req.max_range || req.min_range || req.voxel_size) {
+        run.profile = profileScan(toPoints3d(scan.points));
+        config = applyProfile(config, run.profile, req);
+      }
+      bool deskew = false;
+      sweepFractions(scan, options.deskew, deskew);
+      config.deskew = deskew;
+      run.deskewed = deskew;
+      run.config = config;
+      odometry.emplace(config);
+    }
+    bool used = false;
+    const std::vector<double> times = sweepFractions(scan, options.deskew, used);
+    if (used != run.deskewed) {
+      throw InputError(scan.name + ": per-point times missing, unlike the first scan's");
+    }
+    t = std::chrono::steady_clock::now();
+    OdometryFrame f;
+    f.result = odometry->registerFrame(scan.points, times, scan.name);
+    f.ms = msSince(t);
+    f.index = frames[k];
+    f.name = scan.name;
+    f.stamp = scan.stamp;
+    const Eigen::Isometry3d pose = a * f.result.pose * a_inv;
+    run.trajectory.poses.push_back(pose);
+    if (std::isfinite(scan.stamp)) run.trajectory.stamps.push_back(scan.stamp);
+    if (has_ref) ref_out.push_back(a * info.reference.poses[frames[k]] * a_inv);
+    if (k > 0) {
+      const Eigen::Isometry3d motion = inverseOf(run.trajectory.poses[k - 1]) * pose;
+      f.step_m = motion.translation().norm();
+      if (has_ref) {
+        const PoseError e = poseError(inverseOf(ref_out[k - 1]) * ref_out[k], motion);
+        f.diff_m = e.translation;
+        f.diff_deg = e.rotation_deg;
+      }
+    }
+    run.frames.push_back(std::move(f));
+    if (observer) observer(run.frames.back(), k + 1, frames.size());
+  }
+  if (run.trajectory.stamps.size() != run.trajectory.poses.size()) run.trajectory.stamps.clear();
+  return run;
+}
+
+DiffSummary summarizeDiffs(const std::vector<OdometryFrame>& frames) {
+  std::vector<double> m, d;
+  for (const OdometryFrame& f : frames) {
+    if (f.diff_m) m.push_back(*f.diff_m);
+    if (f.diff_deg) d.push_back(*f.diff_deg);
+  }
+  DiffSummary s;
+  s.frames = m.size();
+  if (m.empty()) {
+    s.median_m = s.max_m = s.median_deg = s.max_deg = std::numeric_limits<double>::quiet_NaN();
+    return s;
+  }
+  auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+  };
+  s.median_m = median(m);
+  s.median_deg = median(d);
+  s.max_m = *std::max_element(m.begin(), m.end());
+  s.max_deg = *std::max_element(d.begin(), d.end());
+  return s;
+}
+
+}  // namespace metricmap

@@ -1,0 +1,50 @@
+#pragma once
+/// \file sensor_profile.h
+/// \brief The odometry's range window and voxel size chosen from the first scan's ranges, so
+/// that a hand-carried indoor scanner and a car's LiDAR both work without tuning.
+///
+/// KISS-ICP ties the voxel to the range (voxel = max_range / 100) with a fixed 100 m range,
+/// which fits a car. Here the window follows what the sensor sees (docs/ODOMETRY.md has the
+/// reasons and the figures):
+/// - max_range = 1.25 x the 99.5th percentile of the first scan's ranges, in [10, 100] m;
+/// - voxel = max_range / 60, in [0.1, 1.0] m;
+/// - min_range = the 0.5th percentile of the ranges, at most 3 m (the carrier's body, the
+///   car's roof);
+/// - a voxel of 0.5 m or less gets a coarse stage at 3 x the voxel (turns of tens of degrees
+///   between scans, which a fine map alone does not follow), and the fine threshold is capped
+///   at 2 x the voxel.
+/// On KITTI's HDL-64E this gives 80 m, 1 m, 3 m, no coarse stage; on the hand-carried scanner of
+/// balm_realworld_dev 30 m, 0.5 m, 2 m, a 1.5 m coarse stage.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "metricmap/registration/lidar_odometry_config.h"
+
+namespace metricmap {
+
+/// \brief Which values the profile decides (the rest stay as given).
+struct SensorProfileRequest {
+  bool max_range = true, min_range = true;
+  /// \brief The voxel, and with it the coarse stage and the threshold cap.
+  bool voxel_size = true;
+};
+
+/// \brief What the first scan showed and what was chosen.
+struct SensorProfile {
+  bool used = false;  ///< false when every value was given
+  double median_range = 0.0, p995_range = 0.0;
+  double max_range = 0.0, min_range = 0.0, voxel_size = 0.0;
+  double coarse_voxel_size = 0.0, max_threshold = 0.0;
+};
+
+/// \brief The profile of a scan (sensor frame points; non-finite points skipped).
+/// \throws std::invalid_argument when the scan has fewer than 100 finite points at a range > 0
+SensorProfile profileScan(const std::vector<Eigen::Vector3d>& points);
+
+/// \brief `config` with the requested values replaced by the profile's.
+LidarOdometryConfig applyProfile(LidarOdometryConfig config, const SensorProfile& profile,
+                                 const SensorProfileRequest& request);
+
+}  // namespace metricmap
