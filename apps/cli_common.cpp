@@ -11,10 +11,10 @@
 #include <optional>
 
 #include "metricmap/common/parse_number.h"
+#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/file_identity.h"
-#include "metricmap/datasets/kitti_sequence.h"
 #include "table.h"
 
 namespace metricmap::cli {
@@ -98,8 +98,8 @@ void requireDistinctFiles(const RolePaths& inputs, const RolePaths& outputs) {
                      " '" + quoteForMessage(first_path) +
                      "' are the same file: an output never replaces an input");
   }
-  std::string message = second_role + " and " + first_role + " both write '" +
-                        quoteForMessage(second_path) + "'";
+  std::string message =
+      second_role + " and " + first_role + " both write '" + quoteForMessage(second_path) + "'";
   if (first_path != second_path) message += " (also named '" + quoteForMessage(first_path) + "')";
   throw UsageError(message);
 }

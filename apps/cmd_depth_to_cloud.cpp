@@ -26,10 +26,9 @@ std::size_t finitePoints(const Cloud& cloud) {
 }
 
 void run(const DepthToCloudOptions& o) {
-  requireDistinctFiles({{"depth image", o.depth},
-                        {"--rgb image", o.rgb},
-                        {"--camera file", o.camera.camera_file}},
-                       {{"--out", o.out}});
+  requireDistinctFiles(
+      {{"depth image", o.depth}, {"--rgb image", o.rgb}, {"--camera file", o.camera.camera_file}},
+      {{"--out", o.out}});
   const DepthImage depth = readDepthImage(o.depth);
   const CameraIntrinsics k = resolveIntrinsics(o.camera, depth);
   const double scale = resolveDepthScale(o.camera, k, depth);

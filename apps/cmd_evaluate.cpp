@@ -224,8 +224,9 @@ void addEvaluateCommand(CLI::App& app) {
       ->check(forms)
       ->capture_default_str()
       ->excludes(rel);
-  sub->add_option("--max-time-diff", o->max_time_diff,
-                  "Largest stamp difference (s) when pairing by time stamps")
+  sub->add_option(
+         "--max-time-diff", o->max_time_diff,
+         "Largest stamp difference (s) pairing poses by time or finding a relation's poses")
       ->check(kFiniteNonNegative)
       ->capture_default_str();
   sub->add_flag("--per-frame", o->per_frame, "Also print the RPE of every frame (table format)");

@@ -174,8 +174,7 @@ void run(const KittiOptions& o) {
       outputs.insert(outputs.end(),
                      {{"--out-trinary", files.pgm}, {"--out-trinary (its .yaml)", files.yaml}});
     }
-    requireDistinctFiles(kittiInputs(o.root, o.sequence, frames, o.poses != "odometry"),
-                         outputs);
+    requireDistinctFiles(kittiInputs(o.root, o.sequence, frames, o.poses != "odometry"), outputs);
   }
   const KittiSequence seq{o.root, o.sequence};
   for (std::size_t f : frames) {  // every scan must exist before any work is done

@@ -6,7 +6,6 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-
 namespace metricmap::cli {
 namespace {
 

@@ -43,8 +43,8 @@ TEST(FileIdentity, OneFileHoweverSpelled) {
   fs::create_directory_symlink(d.path, d / "dirlink");
   const FileIdentity a = fileIdentity(d / "a.pcd");
   EXPECT_TRUE(a.exists);
-  for (const fs::path& p : {d / "./a.pcd", d / "sub/../a.pcd", d / "link.pcd", d / "hard.pcd",
-                            d / "dirlink/a.pcd"}) {
+  for (const fs::path& p :
+       {d / "./a.pcd", d / "sub/../a.pcd", d / "link.pcd", d / "hard.pcd", d / "dirlink/a.pcd"}) {
     EXPECT_TRUE(sameFile(a, fileIdentity(p))) << p;
   }
   // new files: normalised absolute paths, symlinked directories resolved
@@ -130,8 +130,8 @@ TEST(Temporaries, ASignalRemovesTheLiveOnes) {
     int status = 0;
     ::waitpid(pid, &status, 0);
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig) << sig;
-    EXPECT_TRUE(fs::is_empty(d.path)) << "signal " << sig << " left "
-                                      << fs::directory_iterator(d.path)->path();
+    EXPECT_TRUE(fs::is_empty(d.path))
+        << "signal " << sig << " left " << fs::directory_iterator(d.path)->path();
   }
 }
 

@@ -6,6 +6,7 @@
 # line naming both, before any work; the input is unchanged and no file appears.
 MM=$1
 DATA=$2
+case $MM in /*) ;; */*) MM=$PWD/$MM ;; esac  # the cases run in another directory
 source "$(dirname "$0")/lib.sh"
 D=$(cd "$DATA" && pwd)
 

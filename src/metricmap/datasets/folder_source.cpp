@@ -135,8 +135,10 @@ class FolderSource : public ScanSource {
   const SourceInfo& info() const override { return info_; }
 
   Scan scan(std::size_t i) override {
-    if (i >= files_.size())
-      throw std::out_of_range("scan " + std::to_string(i) + " out of range");
+    if (i >= files_.size()) {
+      throw InputError(info_.path + ": no scan " + std::to_string(i) + " (" +
+                       std::to_string(files_.size()) + " scans, numbered from 0)");
+    }
     ScanFile f = readScanFile(files_[i]);
     if (f.point_times.empty() != !info_.point_times) {
       throw InputError(files_[i] + (info_.point_times ? ": no per-point time field, unlike "

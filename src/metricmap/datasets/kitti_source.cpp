@@ -80,11 +80,10 @@ class KittiSource : public ScanSource {
   const SourceInfo& info() const override { return info_; }
 
   Scan scan(std::size_t i) override {
-    if (i >= size_) throw std::out_of_range("KITTI frame " + std::to_string(i) + " out of range");
     Scan s;
     s.index = i;
     s.name = seq_.scan(i);
-    if (access(s.name.c_str(), F_OK) != 0) throw InputError(s.name + ": missing frame");
+    if (i >= size_ || access(s.name.c_str(), F_OK) != 0) throw InputError(s.name + ": missing frame");
     ScanFile f = readScanFile(s.name);
     s.points = std::move(f.points);
     s.intensity = std::move(f.intensity);

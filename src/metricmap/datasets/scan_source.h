@@ -72,8 +72,8 @@ class ScanSource {
   virtual std::size_t size() const = 0;
   /// \brief Scan i (0-based). Cheapest in increasing order; a sequential source (a compressed
   /// log) reads again from its start to go back.
-  /// \throws InputError naming the file when the scan cannot be read
-  /// \throws std::out_of_range when i >= size()
+  /// \throws InputError naming the file when the scan cannot be read, or naming the source
+  /// when i >= size()
   virtual Scan scan(std::size_t i) = 0;
   /// \brief What the source knows.
   virtual const SourceInfo& info() const = 0;

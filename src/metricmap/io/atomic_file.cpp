@@ -111,8 +111,7 @@ void onExit() { removeLiveTemporaries(); }
 void installHandlers() {
   static std::once_flag once;
   std::call_once(once, [] {
-    for (const int sig :
-         {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGXCPU, SIGXFSZ, SIGABRT}) {
+    for (const int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGXCPU, SIGXFSZ, SIGABRT}) {
       struct sigaction old {};
       if (::sigaction(sig, nullptr, &old) != 0) continue;
       // an ignored signal stays ignored (nohup, a background job), another handler stays
@@ -121,7 +120,8 @@ void installHandlers() {
       act.sa_handler = onFatalSignal;
       sigemptyset(&act.sa_mask);
       // every other terminating signal waits while the table is being walked
-      for (const int other : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE}) sigaddset(&act.sa_mask, other);
+      for (const int other : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE})
+        sigaddset(&act.sa_mask, other);
       act.sa_flags = SA_RESTART;
       ::sigaction(sig, &act, nullptr);
     }
@@ -267,10 +267,11 @@ std::size_t removeStaleTemporaries(const std::string& path) {
   for (auto it = stale.begin(); it != stale.end();) {
     // a file: stem.tmp-PID-N.ext, or a temporary's temporary (stem.tmp-PID-N.tmp-...ext); a
     // directory output: base.tmp-PID
-    const bool mine = it->file_form
-                          ? it->stem == stem && (it->rest == ext || (it->rest.rfind(".tmp-", 0) == 0 &&
-                                                                     endsWith(it->rest, ext)))
-                          : it->stem == base;
+    const bool mine =
+        it->file_form
+            ? it->stem == stem &&
+                  (it->rest == ext || (it->rest.rfind(".tmp-", 0) == 0 && endsWith(it->rest, ext)))
+            : it->stem == base;
     if (!mine) {
       ++it;
       continue;
@@ -283,7 +284,8 @@ std::size_t removeStaleTemporaries(const std::string& path) {
   if (fs::is_directory(trimmed, dir_ec)) {
     const std::string inside = trimmed + "/";
     for (const StaleEntry& e : staleIn(inside)) {
-      if (!e.file_form && e.stem.empty()) removed += fs::remove_all(inside + e.name, ec) > 0 ? 1 : 0;
+      if (!e.file_form && e.stem.empty())
+        removed += fs::remove_all(inside + e.name, ec) > 0 ? 1 : 0;
     }
     g_stale_by_dir.erase(inside);
   }

@@ -36,8 +36,8 @@ using RolePath = std::pair<std::string, std::string>;
 
 /// \brief Two roles that name one file: two outputs, or an output and an input.
 struct FileClash {
-  RolePath first;          ///< an output, or the input when `output_is_input`
-  RolePath second;         ///< the output that names the same file
+  RolePath first;   ///< an output, or the input when `output_is_input`
+  RolePath second;  ///< the output that names the same file
   bool output_is_input = false;
 };
 

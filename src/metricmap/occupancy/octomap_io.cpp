@@ -86,8 +86,9 @@ std::uint64_t saturatingProduct(std::uint64_t a, std::uint64_t b) {
 }
 
 std::uint64_t saturatingSum(std::uint64_t a, std::uint64_t b) {
-  return b > std::numeric_limits<std::uint64_t>::max() - a ? std::numeric_limits<std::uint64_t>::max()
-                                                           : a + b;
+  return b > std::numeric_limits<std::uint64_t>::max() - a
+             ? std::numeric_limits<std::uint64_t>::max()
+             : a + b;
 }
 
 /// Reads and checks the file, counts what its leaves expand to, checks that and `use` against
@@ -154,9 +155,8 @@ LogOddsMap readTree(const std::string& path, const LogOddsParams& params, const 
   e.use_bytes = saturatingSum(saturatingProduct(e.occupied_voxels, use.bytes_per_occupied_voxel),
                               saturatingProduct(e.free_voxels, use.bytes_per_free_voxel));
   if (expansion != nullptr) *expansion = e;
-  std::string what = path + " (" + std::to_string(total) + " voxels, " +
-                     std::to_string(occupied) + " occupied, in " + std::to_string(blocks) +
-                     " blocks";
+  std::string what = path + " (" + std::to_string(total) + " voxels, " + std::to_string(occupied) +
+                     " occupied, in " + std::to_string(blocks) + " blocks";
   if (!use.purpose.empty()) what += ", " + use.purpose;
   checkMemory(saturatingSum(e.map_bytes, e.use_bytes), 1, what + ")");
   if (!expand) return map;
@@ -183,9 +183,8 @@ LogOddsMap readOctomap(const std::string& path, const LogOddsParams& params,
   return readTree(path, params, OctomapUse(), max_voxels, nullptr, true);
 }
 
-LogOddsMap readOctomap(const std::string& path, const LogOddsParams& params,
-                       const OctomapUse& use, std::size_t max_voxels,
-                       OctomapExpansion* expansion) {
+LogOddsMap readOctomap(const std::string& path, const LogOddsParams& params, const OctomapUse& use,
+                       std::size_t max_voxels, OctomapExpansion* expansion) {
   return readTree(path, params, use, max_voxels, expansion, true);
 }
 

@@ -32,9 +32,9 @@ struct OctomapUse {
 /// \brief The voxels a file's tree expands to, counted from its leaves without expanding them.
 struct OctomapExpansion {
   std::uint64_t voxels = 0, occupied_voxels = 0, free_voxels = 0;
-  std::uint64_t blocks = 0;      ///< 8^3-voxel blocks of the expanded map
-  std::uint64_t map_bytes = 0;   ///< the expanded LogOddsMap
-  std::uint64_t use_bytes = 0;   ///< what OctomapUse adds
+  std::uint64_t blocks = 0;     ///< 8^3-voxel blocks of the expanded map
+  std::uint64_t map_bytes = 0;  ///< the expanded LogOddsMap
+  std::uint64_t use_bytes = 0;  ///< what OctomapUse adds
 };
 
 /// \brief Read an OctoMap .bt or .ot file (chosen by its first line) into a map with the
@@ -50,8 +50,8 @@ LogOddsMap readOctomap(const std::string& path, const LogOddsParams& params = Lo
 /// together must fit the memory budget (checkMemory), else CapacityError naming the file, the
 /// voxel counts and `use.purpose`, before any expansion. `expansion` (if not null) receives the
 /// counts.
-LogOddsMap readOctomap(const std::string& path, const LogOddsParams& params,
-                       const OctomapUse& use, std::size_t max_voxels = std::size_t{1} << 27,
+LogOddsMap readOctomap(const std::string& path, const LogOddsParams& params, const OctomapUse& use,
+                       std::size_t max_voxels = std::size_t{1} << 27,
                        OctomapExpansion* expansion = nullptr);
 
 /// \brief The checks of readOctomap(path, params, use, max_voxels) without the expansion: what

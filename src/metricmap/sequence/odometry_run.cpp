@@ -21,17 +21,15 @@ Eigen::Isometry3d inverseOf(const Eigen::Isometry3d& t) {
   return i;
 }
 
-std::vector<std::size_t> selectFrames(const std::vector<std::size_t>& frames, std::size_t n) {
+std::vector<std::size_t> selectFrames(const std::vector<std::size_t>& frames, ScanSource& source) {
+  const std::size_t n = source.size();
   if (frames.empty()) {
     std::vector<std::size_t> all(n);
     for (std::size_t i = 0; i < n; ++i) all[i] = i;
     return all;
   }
   for (std::size_t k = 0; k < frames.size(); ++k) {
-    if (frames[k] >= n) {
-      throw std::invalid_argument("frame " + std::to_string(frames[k]) + " is past the last scan (" +
-                                  std::to_string(n) + " scans)");
-    }
+    if (frames[k] >= n) source.scan(frames[k]);  // throws InputError naming the source
     if (k > 0 && frames[k] <= frames[k - 1]) {
       throw std::invalid_argument("frames must be in acquisition order without repeats: " +
                                   std::to_string(frames[k]) + " follows " +
@@ -62,7 +60,7 @@ std::vector<double> sweepFractions(const Scan& scan, DeskewMode mode, bool& used
 
 OdometryRun runOdometry(ScanSource& source, const OdometryRunOptions& options,
                         const OdometryObserver& observer) {
-  const std::vector<std::size_t> frames = selectFrames(options.frames, source.size());
+  const std::vector<std::size_t> frames = selectFrames(options.frames, source);
   const SourceInfo& info = source.info();
   OdometryRun run;
   const bool kitti = info.kind == "kitti";
@@ -121,31 +119,12 @@ OdometryRun runOdometry(ScanSource& source, const OdometryRunOptions& options,
     if (observer) observer(run.frames.back(), k + 1, frames.size());
   }
   if (run.trajectory.stamps.size() != run.trajectory.poses.size()) run.trajectory.stamps.clear();
+  if (has_ref) {
+    run.reference.poses = std::move(ref_out);
+    run.reference.stamps = run.trajectory.stamps;
+    run.rpe = relativeError(run.trajectory.poses, run.reference.poses);
+  }
   return run;
-}
-
-DiffSummary summarizeDiffs(const std::vector<OdometryFrame>& frames) {
-  std::vector<double> m, d;
-  for (const OdometryFrame& f : frames) {
-    if (f.diff_m) m.push_back(*f.diff_m);
-    if (f.diff_deg) d.push_back(*f.diff_deg);
-  }
-  DiffSummary s;
-  s.frames = m.size();
-  if (m.empty()) {
-    s.median_m = s.max_m = s.median_deg = s.max_deg = std::numeric_limits<double>::quiet_NaN();
-    return s;
-  }
-  auto median = [](std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-  };
-  s.median_m = median(m);
-  s.median_deg = median(d);
-  s.max_m = *std::max_element(m.begin(), m.end());
-  s.max_deg = *std::max_element(d.begin(), d.end());
-  return s;
 }
 
 }  // namespace metricmap

@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 
 #include "metricmap/datasets/scan_source.h"
+#include "metricmap/evaluation/relative_error.h"
 #include "metricmap/evaluation/trajectory.h"
 #include "metricmap/registration/lidar_odometry.h"
 #include "metricmap/sequence/sensor_profile.h"
@@ -63,6 +64,12 @@ struct OdometryRun {
   bool deskewed = false;
   std::string convention;      ///< "kitti camera 0" or "sensor"
   double read_seconds = 0.0;
+  /// \brief The source's reference poses of the frames, in the output convention (empty when
+  /// the source has none).
+  Trajectory reference;
+  /// \brief Per-frame relative pose error against `reference` (evo_rpe, delta 1 frame: what
+  /// `metricmap evaluate` prints for the written poses); empty without a reference.
+  std::optional<RelativeError> rpe;
 };
 
 /// \brief Called after each frame (progress).
@@ -73,12 +80,5 @@ using OdometryObserver = std::function<void(const OdometryFrame&, std::size_t do
 /// \throws std::invalid_argument for a frame list that is not strictly increasing or out of range
 OdometryRun runOdometry(ScanSource& source, const OdometryRunOptions& options,
                         const OdometryObserver& observer = {});
-
-/// \brief Median and maximum of the per-frame differences (NaN when there are none).
-struct DiffSummary {
-  std::size_t frames = 0;
-  double median_m = 0.0, max_m = 0.0, median_deg = 0.0, max_deg = 0.0;
-};
-DiffSummary summarizeDiffs(const std::vector<OdometryFrame>& frames);
 
 }  // namespace metricmap

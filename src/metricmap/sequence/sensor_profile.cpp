@@ -9,9 +9,10 @@ namespace {
 
 constexpr double kRangeFactor = 1.25;
 constexpr double kMaxRange = 100.0, kMinMaxRange = 10.0;
-constexpr double kVoxelPerRange = 1.0 / 60.0, kMinVoxel = 0.1, kMaxVoxel = 1.0;
+constexpr double kVoxelPerRange = 1.0 / 75.0, kMinVoxel = 0.1, kMaxVoxel = 1.0;
 constexpr double kMinRangeCap = 3.0;
-constexpr double kCoarseBelow = 0.5, kCoarseFactor = 3.0, kThresholdCap = 2.0;
+constexpr double kCoarseBelow = 0.75, kCoarseFactor = 3.0, kThresholdCap = 2.0;
+constexpr double kFineConvergence = 3e-4;
 
 double percentile(std::vector<double>& v, double q) {
   const auto k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1));
@@ -44,6 +45,7 @@ SensorProfile profileScan(const std::vector<Eigen::Vector3d>& points) {
   if (p.voxel_size <= kCoarseBelow) {
     p.coarse_voxel_size = kCoarseFactor * p.voxel_size;
     p.max_threshold = kThresholdCap * p.voxel_size;
+    p.convergence = kFineConvergence;
   }
   return p;
 }
@@ -57,6 +59,7 @@ LidarOdometryConfig applyProfile(LidarOdometryConfig config, const SensorProfile
     config.voxel_size = profile.voxel_size;
     config.coarse_voxel_size = profile.coarse_voxel_size;
     config.max_threshold = profile.max_threshold;
+    if (profile.convergence > 0.0) config.convergence = profile.convergence;
   }
   if (!(config.min_range < config.max_range)) config.min_range = 0.0;
   return config;

@@ -7,14 +7,15 @@
 /// which fits a car. Here the window follows what the sensor sees (docs/ODOMETRY.md has the
 /// reasons and the figures):
 /// - max_range = 1.25 x the 99.5th percentile of the first scan's ranges, in [10, 100] m;
-/// - voxel = max_range / 60, in [0.1, 1.0] m;
+/// - voxel = max_range / 75, in [0.1, 1.0] m;
 /// - min_range = the 0.5th percentile of the ranges, at most 3 m (the carrier's body, the
 ///   car's roof);
-/// - a voxel of 0.5 m or less gets a coarse stage at 3 x the voxel (turns of tens of degrees
-///   between scans, which a fine map alone does not follow), and the fine threshold is capped
-///   at 2 x the voxel.
+/// - a voxel below 0.75 m gets a coarse stage at 3 x the voxel (turns of tens of degrees
+///   between scans, which a fine map alone does not follow), the fine threshold capped at
+///   2 x the voxel and the convergence tolerance at 3e-4 (smaller steps move the pose by less
+///   than the map's quantisation and cost a third of the time);
 /// On KITTI's HDL-64E this gives 80 m, 1 m, 3 m, no coarse stage; on the hand-carried scanner of
-/// balm_realworld_dev 30 m, 0.5 m, 2 m, a 1.5 m coarse stage.
+/// balm_realworld_dev 30 m, 0.4 m, 2 m, a 1.2 m coarse stage.
 
 #include <vector>
 
@@ -37,6 +38,7 @@ struct SensorProfile {
   double median_range = 0.0, p995_range = 0.0;
   double max_range = 0.0, min_range = 0.0, voxel_size = 0.0;
   double coarse_voxel_size = 0.0, max_threshold = 0.0;
+  double convergence = 0.0;  ///< 0: the config's
 };
 
 /// \brief The profile of a scan (sensor frame points; non-finite points skipped).

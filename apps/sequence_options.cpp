@@ -1,0 +1,109 @@
+#include "sequence_options.h"
+
+#include <filesystem>
+
+#include "metricmap/datasets/kitti_sequence.h"
+
+namespace metricmap::cli {
+
+void addSourceOptions(CLI::App& app, SourceOptions& o) {
+  app.add_option("source", o.path,
+                 "Scans: a KITTI odometry root (sequences/), a folder of .pcd/.ply/.bin/.npy "
+                 "scans, a .txt list of scans, or a CARMEN log (.clf/.log, .gz/.bz2)")
+      ->required();
+  app.add_option("--source-format", o.format, "How to read SOURCE")
+      ->check(CLI::IsMember({"auto", "kitti", "folder", "carmen"}))
+      ->capture_default_str();
+  app.add_option("--sequence", o.sequence, "KITTI sequence number")->capture_default_str();
+  app.add_option("--frames", o.frames,
+                 "Scans in acquisition order, e.g. 0-100,120 (indices from 0; default: all)");
+  app.add_option("--reference", o.reference,
+                 "Reference poses to compare with (KITTI or TUM rows, one per scan); default: "
+                 "poses/NN.txt (KITTI) or poses.txt beside the scans")
+      ->check(CLI::ExistingFile);
+  app.add_option("--times", o.times, "Scan stamps, one per line; default: times.txt")
+      ->check(CLI::ExistingFile);
+}
+
+void checkSourceOptions(const SourceOptions& o) {
+  if (o.frames.empty()) return;
+  std::vector<std::size_t> f;
+  try {
+    f = parseFrameList(o.frames);
+  } catch (const std::invalid_argument& e) {
+    throw CLI::ValidationError("--frames", e.what());
+  }
+  for (std::size_t k = 1; k < f.size(); ++k) {
+    if (f[k] <= f[k - 1]) {
+      throw CLI::ValidationError("--frames", "frames must be in acquisition order without "
+                                             "repeats: " + std::to_string(f[k]) + " follows " +
+                                                 std::to_string(f[k - 1]));
+    }
+  }
+}
+
+RolePaths sourceInputs(const SourceOptions& o) {
+  RolePaths in;
+  std::error_code ec;
+  if (!std::filesystem::is_directory(o.path, ec)) in.push_back({"source", o.path});
+  if (!o.reference.empty()) in.push_back({"--reference", o.reference});
+  if (!o.times.empty()) in.push_back({"--times", o.times});
+  if (std::filesystem::is_directory(o.path, ec)) {
+    // The files a folder or KITTI source reads beside its scans.
+    const std::filesystem::path d(o.path);
+    for (const auto& p : {d / "poses.txt", d / "times.txt", d / "poses" / (o.sequence + ".txt"),
+                          d / "sequences" / o.sequence / "times.txt",
+                          d / "sequences" / o.sequence / "calib.txt"}) {
+      if (std::filesystem::exists(p, ec)) in.push_back({"source file", p.string()});
+    }
+  }
+  return in;
+}
+
+std::unique_ptr<ScanSource> openSource(const SourceOptions& o) {
+  ScanSourceOptions so;
+  so.format = o.format;
+  so.sequence = o.sequence;
+  so.reference_poses = o.reference;
+  so.times = o.times;
+  return openScanSource(o.path, so);
+}
+
+std::vector<std::size_t> selectedFrames(const SourceOptions& o) {
+  return o.frames.empty() ? std::vector<std::size_t>{} : parseFrameList(o.frames);
+}
+
+void addRangeOptions(CLI::App& app, RangeOptions& o, std::string& profile) {
+  app.add_option("--profile", profile,
+                 "Range window and voxel: kitti (100 m, 3 m, 1 m voxel; the default for a KITTI "
+                 "source) or auto (from the first scan's ranges; the default otherwise)")
+      ->check(CLI::IsMember({"auto", "kitti"}));
+  app.add_option("--max-range", o.max_range, "Drop returns farther (m); local map radius")
+      ->check(kFinitePositive);
+  app.add_option("--min-range", o.min_range, "Drop returns closer (m)")->check(kFiniteNonNegative);
+  app.add_option("--voxel-size", o.voxel_size, "Local map voxel (m)")->check(kFinitePositive);
+}
+
+void checkRangeOptions(const RangeOptions& o) {
+  if (o.min_range && o.max_range && !(*o.min_range < *o.max_range)) {
+    throw CLI::ValidationError("--min-range", "must be below --max-range");
+  }
+}
+
+void applyRangeOptions(const RangeOptions& o, const std::string& profile, const SourceInfo& info,
+                       LidarOdometryConfig& config, SensorProfileRequest& request) {
+  const bool automatic = profile.empty() ? info.kind != "kitti" : profile == "auto";
+  request.max_range = automatic && !o.max_range;
+  request.min_range = automatic && !o.min_range;
+  request.voxel_size = automatic && !o.voxel_size;
+  if (o.max_range) config.max_range = *o.max_range;
+  if (o.min_range) config.min_range = *o.min_range;
+  if (o.voxel_size) config.voxel_size = *o.voxel_size;
+  if (!(config.min_range < config.max_range) && !request.min_range && !request.max_range) {
+    throw UsageError("--min-range " + std::to_string(config.min_range) +
+                     " must be below the range window's maximum " +
+                     std::to_string(config.max_range) + " m");
+  }
+}
+
+}  // namespace metricmap::cli

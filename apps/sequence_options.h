@@ -1,0 +1,49 @@
+#pragma once
+/// \file sequence_options.h
+/// \brief Options every command that reads a scan source shares: the source, its frames and
+/// reference, and the odometry's range window and voxel (given, or from the first scan).
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cli_common.h"
+#include "metricmap/datasets/scan_source.h"
+#include "metricmap/registration/lidar_odometry_config.h"
+#include "metricmap/sequence/sensor_profile.h"
+
+namespace metricmap::cli {
+
+struct SourceOptions {
+  std::string path, format = "auto", sequence = "00", frames, reference, times;
+};
+
+/// \brief SOURCE (positional), --source-format, --sequence, --frames, --reference, --times.
+void addSourceOptions(CLI::App& app, SourceOptions& o);
+/// \brief Usage checks (exit 2): the frame list. \throws CLI::ValidationError
+void checkSourceOptions(const SourceOptions& o);
+/// \brief The files the source reads that an output must not replace (the source path itself,
+/// the reference and times files).
+RolePaths sourceInputs(const SourceOptions& o);
+std::unique_ptr<ScanSource> openSource(const SourceOptions& o);
+/// \brief The frames --frames names (empty: all).
+std::vector<std::size_t> selectedFrames(const SourceOptions& o);
+
+struct RangeOptions {
+  std::optional<double> max_range, min_range, voxel_size;
+};
+
+/// \brief --max-range, --min-range, --voxel-size and --profile auto|kitti.
+void addRangeOptions(CLI::App& app, RangeOptions& o, std::string& profile);
+/// \brief --min-range below --max-range when both are given. \throws CLI::ValidationError
+void checkRangeOptions(const RangeOptions& o);
+/// \brief The KITTI preset (`profile` "kitti", the default for a KITTI source: the
+/// LidarOdometryConfig defaults) or values from the first scan ("auto", the default for other
+/// sources); the values given on the command line replace either.
+void applyRangeOptions(const RangeOptions& o, const std::string& profile, const SourceInfo& info,
+                       LidarOdometryConfig& config, SensorProfileRequest& request);
+
+}  // namespace metricmap::cli
