@@ -88,19 +88,40 @@ const CLI::Validator kOutputFile(
     },
     "FILE");
 
+namespace {
+
+/// A path as it may appear in a one-line message: control bytes as \xHH, and when it is very
+/// long its end (the file name) kept.
+std::string quotePath(const std::string& path) {
+  std::string out;
+  for (const char ch : path) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c < 0x20 || c == 0x7f) {
+      static const char* hex = "0123456789abcdef";
+      out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+    } else {
+      out += ch;
+    }
+  }
+  constexpr std::size_t kMax = 240;
+  return out.size() <= kMax ? out : "..." + out.substr(out.size() - (kMax - 3));
+}
+
+}  // namespace
+
 void requireDistinctFiles(const RolePaths& inputs, const RolePaths& outputs) {
   const std::optional<FileClash> clash = findFileClash(inputs, outputs);
   if (!clash) return;
   const auto& [first_role, first_path] = clash->first;
   const auto& [second_role, second_path] = clash->second;
   if (clash->output_is_input) {
-    throw UsageError(second_role + " '" + quoteForMessage(second_path) + "' and the " + first_role +
-                     " '" + quoteForMessage(first_path) +
+    throw UsageError(second_role + " '" + quotePath(second_path) + "' and the " + first_role +
+                     " '" + quotePath(first_path) +
                      "' are the same file: an output never replaces an input");
   }
   std::string message =
-      second_role + " and " + first_role + " both write '" + quoteForMessage(second_path) + "'";
-  if (first_path != second_path) message += " (also named '" + quoteForMessage(first_path) + "')";
+      second_role + " and " + first_role + " both write '" + quotePath(second_path) + "'";
+  if (first_path != second_path) message += " (also named '" + quotePath(first_path) + "')";
   throw UsageError(message);
 }
 

@@ -214,7 +214,13 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
   // everything that can fail on the data is computed before the first file is written
   t = std::chrono::steady_clock::now();
   TrinaryMap trinary;
-  if (!o.out_map.empty()) trinary = projectBand(map, band.first, band.second);
+  if (!o.out_map.empty()) {
+    try {
+      trinary = projectBand(map, band.first, band.second);
+    } catch (const CapacityError& e) {
+      throw CapacityError("--out-map with --band " + o.band + ": " + e.what());
+    }
+  }
   OutputSet outputs;  // every output or none, committed once the report is printed
   if (!o.out_bt.empty()) writeOctomapQuietly(map, outputs.stage(o.out_bt));
   if (!o.out_ot.empty()) writeOctomapQuietly(map, outputs.stage(o.out_ot));

@@ -164,7 +164,7 @@ TEST_P(CarmenRealLog, MatchesAnIndependentParseAndSourceMd) {
     SCOPED_TRACE(i);
     expectSame(path, source.scan(i), o.scans[i]);
   }
-  EXPECT_THROW(source.scan(n), std::out_of_range);
+  EXPECT_THROW(source.scan(n), metricmap::InputError);
 
   // The ScanLog reader goes through the same parser (the smallest log only: it reads it whole).
   if (p.flaser > 2000) return;

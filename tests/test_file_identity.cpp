@@ -61,9 +61,9 @@ TEST(FileIdentity, RelativeAndAbsoluteSpellings) {
   TempDir d("identity_rel");
   const fs::path cwd = fs::current_path();
   fs::current_path(d.path);
-  const bool same_new = sameFile(fileIdentity("x.pcd"), fileIdentity((d / "x.pcd").string()));
+  const bool same_new = sameFile(fileIdentity("x.pcd"), fileIdentity(d / "x.pcd"));
   touch(d / "y.pcd");
-  const bool same_old = sameFile(fileIdentity("./y.pcd"), fileIdentity((d / "y.pcd").string()));
+  const bool same_old = sameFile(fileIdentity("./y.pcd"), fileIdentity(d / "y.pcd"));
   fs::current_path(cwd);
   EXPECT_TRUE(same_new);
   EXPECT_TRUE(same_old);
@@ -100,12 +100,13 @@ TEST(Temporaries, StaleOnesOfDeadRunsAreRemoved) {
                                          "g.tmp-" + dead + "-0.csv", "g.tmp-x-0.pcd"};
   for (const auto& n : stale) touch(d / n);
   for (const auto& n : kept) touch(d / n);
+  // a staged directory of a dead run (a directory is listed once per process: before the run)
+  fs::create_directory(d / ("steps.tmp-" + dead));
+  touch(d.path / ("steps.tmp-" + dead) / "s.svg");
   EXPECT_EQ(removeStaleTemporaries(d / "g.pcd"), stale.size());
   for (const auto& n : stale) EXPECT_FALSE(fs::exists(d / n)) << n;
   for (const auto& n : kept) EXPECT_TRUE(fs::exists(d / n)) << n;
-  // a staged directory of a dead run
-  fs::create_directory(d / ("steps.tmp-" + dead));
-  touch(d.path / ("steps.tmp-" + dead) / "s.svg");
+  EXPECT_TRUE(fs::exists(d / ("steps.tmp-" + dead)));  // another output's
   EXPECT_EQ(removeStaleTemporaries(d / "steps"), 1u);
   EXPECT_FALSE(fs::exists(d / ("steps.tmp-" + dead)));
 }

@@ -188,7 +188,7 @@ TEST(FolderSource, RefusesInconsistentFolders) {
   writeText(two / "times.txt", "1.0\n");
   expectRefused(two, "1 stamp(s) for 2 scan(s)");
   writeText(two / "times.txt", "2.0\n1.0\n");
-  expectRefused(two, "not after the previous one");
+  expectRefused(two, "is not after the one before");
   writeText(two / "times.txt", "1.0\n2.0\n");
   writeText(two / "poses.txt", "1 0 0 0 0 1 0 0 0 0 1 0\n");
   expectRefused(two, "1 pose line(s) for 2 scan(s)");

@@ -38,7 +38,7 @@ interrupt() {
   done
   kill -"$sig" "$pid" 2>/dev/null
   local rc=0
-  wait "$pid" || rc=$?
+  { wait "$pid"; } 2>/dev/null || rc=$?  # the shell's "Hangup" notice is not the command's
   local left
   left=$(ls -A "$o" | tr '\n' ' ')
   if [ "$saw" != 1 ]; then

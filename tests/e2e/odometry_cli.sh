@@ -12,7 +12,6 @@ done
 cp "$DATA/kitti_odometry_00/sequences/00/calib.txt" "$kr/sequences/00/calib.txt"
 out=$tmp/poses.txt
 
-expect 2 "--frames" -- "$MM" odometry "$kr"
 expect 2 "--frames" -- "$MM" odometry "$kr" --frames 3-1
 expect 2 "--max-range" -- "$MM" odometry "$kr" --frames 0-1 --max-range nan
 expect 2 "--min-range" -- "$MM" odometry "$kr" --frames 0-1 --min-range 200

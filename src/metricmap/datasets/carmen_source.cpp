@@ -62,8 +62,8 @@ CarmenSource::~CarmenSource() = default;
 
 Scan CarmenSource::scan(std::size_t i) {
   if (i >= lines_.size()) {
-    throw std::out_of_range("scan " + std::to_string(i) + " of " + info_.path + ", which has " +
-                            std::to_string(lines_.size()));
+    throw InputError(info_.path + ": no scan " + std::to_string(i) + " (" +
+                     std::to_string(lines_.size()) + " scans, numbered from 0)");
   }
   if (!reader_ || i < next_) {
     reader_.reset();  // the old one is closed before the file is opened again

@@ -40,7 +40,7 @@ class CarmenSource : public ScanSource {
   ~CarmenSource() override;
 
   std::size_t size() const override { return lines_.size(); }
-  /// \brief Scan i; `name` is "PATH: line N". \throws std::out_of_range when i >= size()
+  /// \brief Scan i; `name` is "PATH: line N". \throws InputError naming the log when i >= size()
   /// \throws InputError naming the file when it cannot be read again or has changed
   Scan scan(std::size_t i) override;
   const SourceInfo& info() const override { return info_; }

@@ -10,6 +10,7 @@
 #include "metricmap/datasets/reference_file.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/scan_file.h"
+#include "metricmap/io/trajectory.h"
 
 namespace metricmap {
 namespace fs = std::filesystem;
@@ -51,7 +52,7 @@ class KittiSource : public ScanSource {
         !o.times.empty() ? o.times : root + "/sequences/" + o.sequence + "/times.txt";
     if (!o.times.empty() || access(times.c_str(), F_OK) == 0) {
       // KITTI's times.txt covers the whole sequence: read as many stamps as it has.
-      info_.stamps = readStampsFile(times, countDataLines(times));
+      info_.stamps = readStampsFile(times, kAnyCount);
       if (info_.stamps.size() < size_) {
         throw InputError(times + ": " + std::to_string(info_.stamps.size()) + " stamp(s) for " +
                          std::to_string(size_) + " scan(s)");
@@ -60,8 +61,7 @@ class KittiSource : public ScanSource {
     }
     const std::string poses = !o.reference_poses.empty() ? o.reference_poses : seq_.poses();
     if (!o.reference_poses.empty() || access(poses.c_str(), F_OK) == 0) {
-      const std::size_t lines = countDataLines(poses);
-      Trajectory camera = readReferencePoses(poses, lines);
+      Trajectory camera = readTrajectoryFile(poses);
       if (camera.size() < size_) {
         throw InputError(poses + ": " + std::to_string(camera.size()) + " pose(s) for " +
                          std::to_string(size_) + " scan(s)");
