@@ -44,12 +44,12 @@ void run(const OdometryOptions& o) {
               : o.deskew_azimuth ? DeskewMode::Azimuth
                                  : DeskewMode::Auto;
   const bool progress = isatty(STDERR_FILENO) != 0;
-  const OdometryRun r = runOdometry(*source, ro, [&](const OdometryFrame& f, std::size_t done,
-                                                      std::size_t total) {
-    if (!progress) return;
-    std::fprintf(stderr, "\rframe %zu/%zu  %.1f ms/scan  %.0f s left   ", done, total, f.ms,
-                 secondsSince(t_start) / done * static_cast<double>(total - done));
-  });
+  const OdometryRun r =
+      runOdometry(*source, ro, [&](const OdometryFrame& f, std::size_t done, std::size_t total) {
+        if (!progress) return;
+        std::fprintf(stderr, "\rframe %zu/%zu  %.1f ms/scan  %.0f s left   ", done, total, f.ms,
+                     secondsSince(t_start) / done * static_cast<double>(total - done));
+      });
   if (progress) std::fprintf(stderr, "\n");
 
   Table tab({"frame", "x", "y", "z", "step_m", "ms", "iterations", "pairs", "diff_m", "diff_deg"});
@@ -133,7 +133,8 @@ void run(const OdometryOptions& o) {
                     a.max);
       report += line;
     }
-    std::snprintf(line, sizeof line, "%zu frames, median %.1f ms per scan (load excluded), %.2f s in all\n",
+    std::snprintf(line, sizeof line,
+                  "%zu frames, median %.1f ms per scan (load excluded), %.2f s in all\n",
                   r.frames.size(), median_ms, secondsSince(t_start));
     report += line;
   }
@@ -158,7 +159,8 @@ void addOdometryCommand(CLI::App& app) {
                   "Write the poses: for KITTI camera 0 in the frame of camera 0 of the first "
                   "frame (as poses/NN.txt), otherwise the sensor in the frame of the first scan")
       ->check(kOutputFile);
-  sub->add_option("--pose-format", o->pose_format, "kitti (12 numbers) or tum (stamp tx ty tz qx qy qz qw)")
+  sub->add_option("--pose-format", o->pose_format,
+                  "kitti (12 numbers) or tum (stamp tx ty tz qx qy qz qw)")
       ->check(CLI::IsMember({"kitti", "tum"}))
       ->capture_default_str();
   sub->add_option("--threads", o->threads,

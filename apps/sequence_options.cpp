@@ -35,9 +35,10 @@ void checkSourceOptions(const SourceOptions& o) {
   }
   for (std::size_t k = 1; k < f.size(); ++k) {
     if (f[k] <= f[k - 1]) {
-      throw CLI::ValidationError("--frames", "frames must be in acquisition order without "
-                                             "repeats: " + std::to_string(f[k]) + " follows " +
-                                                 std::to_string(f[k - 1]));
+      throw CLI::ValidationError("--frames",
+                                 "frames must be in acquisition order without "
+                                 "repeats: " +
+                                     std::to_string(f[k]) + " follows " + std::to_string(f[k - 1]));
     }
   }
 }
@@ -51,9 +52,9 @@ RolePaths sourceInputs(const SourceOptions& o) {
   if (std::filesystem::is_directory(o.path, ec)) {
     // The files a folder or KITTI source reads beside its scans.
     const std::filesystem::path d(o.path);
-    for (const auto& p : {d / "poses.txt", d / "times.txt", d / "poses" / (o.sequence + ".txt"),
-                          d / "sequences" / o.sequence / "times.txt",
-                          d / "sequences" / o.sequence / "calib.txt"}) {
+    for (const auto& p :
+         {d / "poses.txt", d / "times.txt", d / "poses" / (o.sequence + ".txt"),
+          d / "sequences" / o.sequence / "times.txt", d / "sequences" / o.sequence / "calib.txt"}) {
       if (std::filesystem::exists(p, ec)) in.push_back({"source file", p.string()});
     }
   }

@@ -27,8 +27,8 @@ using metricmap::InputError;
 namespace {
 
 const std::string kBalm = std::string(METRICMAP_SHARED_DATA_DIR) + "/balm_realworld_dev";
-const std::string kVlp16 = std::string(METRICMAP_SHARED_DATA_DIR) +
-                           "/nebula_driver_samples/vlp16_1673400472138016708.pcd";
+const std::string kVlp16 =
+    std::string(METRICMAP_SHARED_DATA_DIR) + "/nebula_driver_samples/vlp16_1673400472138016708.pcd";
 
 std::vector<std::vector<double>> numberRows(const std::string& path) {
   std::ifstream in(path);
@@ -49,8 +49,8 @@ void writeText(const fs::path& p, const std::string& text) { std::ofstream(p) <<
 // A minimal binary PCD with x y z and one extra field of the given PCD type/size.
 void writePcdWithField(const fs::path& p, const char* field, char type, int size, int points) {
   std::ofstream out(p, std::ios::binary);
-  out << "VERSION 0.7\nFIELDS x y z " << field << "\nSIZE 4 4 4 " << size << "\nTYPE F F F "
-      << type << "\nCOUNT 1 1 1 1\nWIDTH " << points << "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS "
+  out << "VERSION 0.7\nFIELDS x y z " << field << "\nSIZE 4 4 4 " << size << "\nTYPE F F F " << type
+      << "\nCOUNT 1 1 1 1\nWIDTH " << points << "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS "
       << points << "\nDATA binary\n";
   for (int i = 0; i < points; ++i) {
     const float xyz[3] = {static_cast<float>(i), 1.0f, 2.0f};
@@ -63,8 +63,8 @@ void writePcdWithField(const fs::path& p, const char* field, char type, int size
 }  // namespace
 
 TEST(NaturalOrder, NumbersCompareByValue) {
-  std::vector<std::string> names = {"scan10.pcd", "scan2.pcd", "scan1.pcd", "scan02.pcd",
-                                    "a.pcd",      "scan100.pcd"};
+  std::vector<std::string> names = {"scan10.pcd", "scan2.pcd", "scan1.pcd",
+                                    "scan02.pcd", "a.pcd",     "scan100.pcd"};
   std::sort(names.begin(), names.end(), metricmap::naturalLess);
   const std::vector<std::string> want = {"a.pcd",      "scan1.pcd",  "scan2.pcd",
                                          "scan02.pcd", "scan10.pcd", "scan100.pcd"};

@@ -120,8 +120,8 @@ class FolderSource : public ScanSource {
     if (!o.times.empty() || fs::exists(times, ec)) {
       info_.stamps = readStampsFile(times, files_.size());
     }
-    const std::string poses = !o.reference_poses.empty() ? o.reference_poses
-                                                         : (base / "poses.txt").string();
+    const std::string poses =
+        !o.reference_poses.empty() ? o.reference_poses : (base / "poses.txt").string();
     if (!o.reference_poses.empty() || fs::exists(poses, ec)) {
       info_.reference = readReferencePoses(poses, files_.size());
       if (info_.reference.stamps.empty()) info_.reference.stamps = info_.stamps;
@@ -141,8 +141,9 @@ class FolderSource : public ScanSource {
     }
     ScanFile f = readScanFile(files_[i]);
     if (f.point_times.empty() != !info_.point_times) {
-      throw InputError(files_[i] + (info_.point_times ? ": no per-point time field, unlike "
-                                                      : ": a per-point time field, unlike ") +
+      throw InputError(files_[i] +
+                       (info_.point_times ? ": no per-point time field, unlike "
+                                          : ": a per-point time field, unlike ") +
                        files_.front());
     }
     Scan s;

@@ -83,7 +83,8 @@ class KittiSource : public ScanSource {
     Scan s;
     s.index = i;
     s.name = seq_.scan(i);
-    if (i >= size_ || access(s.name.c_str(), F_OK) != 0) throw InputError(s.name + ": missing frame");
+    if (i >= size_ || access(s.name.c_str(), F_OK) != 0)
+      throw InputError(s.name + ": missing frame");
     ScanFile f = readScanFile(s.name);
     s.points = std::move(f.points);
     s.intensity = std::move(f.intensity);

@@ -49,7 +49,8 @@ NpyArray readNpyPoints(const std::string& path) {
   static const std::regex descr_re("'descr'\\s*:\\s*'([^']*)'");
   static const std::regex fortran_re("'fortran_order'\\s*:\\s*(True|False)");
   static const std::regex shape_re("'shape'\\s*:\\s*\\(\\s*([0-9]*)\\s*,\\s*([0-9]*)\\s*,?\\s*\\)");
-  if (!std::regex_search(header, m, descr_re)) throw InputError(path + ": .npy header has no descr");
+  if (!std::regex_search(header, m, descr_re))
+    throw InputError(path + ": .npy header has no descr");
   const std::string descr = m[1];
   std::size_t item = 0;
   if (descr == "<f4") {

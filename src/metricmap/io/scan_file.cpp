@@ -36,33 +36,73 @@ const pcl::PCLPointField* findField(const pcl::PCLPointCloud2& blob, const std::
 // One value of a numeric field as double; `scale` turns integers into the wanted unit.
 double readValue(const std::uint8_t* at, std::uint8_t datatype) {
   switch (datatype) {
-    case pcl::PCLPointField::INT8: return static_cast<double>(*reinterpret_cast<const std::int8_t*>(at));
-    case pcl::PCLPointField::UINT8: return static_cast<double>(*at);
-    case pcl::PCLPointField::INT16: { std::int16_t v; std::memcpy(&v, at, 2); return v; }
-    case pcl::PCLPointField::UINT16: { std::uint16_t v; std::memcpy(&v, at, 2); return v; }
-    case pcl::PCLPointField::INT32: { std::int32_t v; std::memcpy(&v, at, 4); return v; }
-    case pcl::PCLPointField::UINT32: { std::uint32_t v; std::memcpy(&v, at, 4); return v; }
-    case pcl::PCLPointField::FLOAT32: { float v; std::memcpy(&v, at, 4); return v; }
-    case pcl::PCLPointField::FLOAT64: { double v; std::memcpy(&v, at, 8); return v; }
-    case pcl::PCLPointField::INT64: { std::int64_t v; std::memcpy(&v, at, 8); return static_cast<double>(v); }
-    case pcl::PCLPointField::UINT64: { std::uint64_t v; std::memcpy(&v, at, 8); return static_cast<double>(v); }
-    default: return std::numeric_limits<double>::quiet_NaN();
+    case pcl::PCLPointField::INT8:
+      return static_cast<double>(*reinterpret_cast<const std::int8_t*>(at));
+    case pcl::PCLPointField::UINT8:
+      return static_cast<double>(*at);
+    case pcl::PCLPointField::INT16: {
+      std::int16_t v;
+      std::memcpy(&v, at, 2);
+      return v;
+    }
+    case pcl::PCLPointField::UINT16: {
+      std::uint16_t v;
+      std::memcpy(&v, at, 2);
+      return v;
+    }
+    case pcl::PCLPointField::INT32: {
+      std::int32_t v;
+      std::memcpy(&v, at, 4);
+      return v;
+    }
+    case pcl::PCLPointField::UINT32: {
+      std::uint32_t v;
+      std::memcpy(&v, at, 4);
+      return v;
+    }
+    case pcl::PCLPointField::FLOAT32: {
+      float v;
+      std::memcpy(&v, at, 4);
+      return v;
+    }
+    case pcl::PCLPointField::FLOAT64: {
+      double v;
+      std::memcpy(&v, at, 8);
+      return v;
+    }
+    case pcl::PCLPointField::INT64: {
+      std::int64_t v;
+      std::memcpy(&v, at, 8);
+      return static_cast<double>(v);
+    }
+    case pcl::PCLPointField::UINT64: {
+      std::uint64_t v;
+      std::memcpy(&v, at, 8);
+      return static_cast<double>(v);
+    }
+    default:
+      return std::numeric_limits<double>::quiet_NaN();
   }
 }
 
 std::size_t typeSize(std::uint8_t datatype) {
   switch (datatype) {
     case pcl::PCLPointField::INT8:
-    case pcl::PCLPointField::UINT8: return 1;
+    case pcl::PCLPointField::UINT8:
+      return 1;
     case pcl::PCLPointField::INT16:
-    case pcl::PCLPointField::UINT16: return 2;
+    case pcl::PCLPointField::UINT16:
+      return 2;
     case pcl::PCLPointField::INT32:
     case pcl::PCLPointField::UINT32:
-    case pcl::PCLPointField::FLOAT32: return 4;
+    case pcl::PCLPointField::FLOAT32:
+      return 4;
     case pcl::PCLPointField::FLOAT64:
     case pcl::PCLPointField::INT64:
-    case pcl::PCLPointField::UINT64: return 8;
-    default: return 0;
+    case pcl::PCLPointField::UINT64:
+      return 8;
+    default:
+      return 0;
   }
 }
 
@@ -70,12 +110,15 @@ std::size_t typeSize(std::uint8_t datatype) {
 double timeScale(std::uint8_t datatype) {
   switch (datatype) {
     case pcl::PCLPointField::FLOAT32:
-    case pcl::PCLPointField::FLOAT64: return 1.0;
+    case pcl::PCLPointField::FLOAT64:
+      return 1.0;
     case pcl::PCLPointField::INT32:
     case pcl::PCLPointField::UINT32:
     case pcl::PCLPointField::INT64:
-    case pcl::PCLPointField::UINT64: return 1e-9;
-    default: return 0.0;
+    case pcl::PCLPointField::UINT64:
+      return 1e-9;
+    default:
+      return 0.0;
   }
 }
 
@@ -139,7 +182,9 @@ ScanFile fromBlob(const std::string& path, const pcl::PCLPointCloud2& blob) {
       continue;
     }
     out.points.push_back(q);
-    if (intensity) out.intensity.push_back(static_cast<float>(readValue(p + intensity->offset, intensity->datatype)));
+    if (intensity)
+      out.intensity.push_back(
+          static_cast<float>(readValue(p + intensity->offset, intensity->datatype)));
     if (time) out.point_times.push_back(readValue(p + time->offset, time->datatype) * time_scale);
   }
   return out;

@@ -160,8 +160,9 @@ OdometryResult LidarOdometry::registerScan(const Scan& points, const std::vector
     Eigen::Isometry3d initial = res.prediction;
     if (coarse) {
       const double threshold = coarse_threshold_.threshold();
-      const PointToPointIcpResult c = alignWithRecovery(coarse_source_, coarse_map_, initial,
-                                                        &last, threshold, 0.0, config_.convergence, res.restarted);
+      const PointToPointIcpResult c =
+          alignWithRecovery(coarse_source_, coarse_map_, initial, &last, threshold, 0.0,
+                            config_.convergence, res.restarted);
       Eigen::Isometry3d deviation;
       deviation.matrix() = initial.matrix().inverse() * c.pose.matrix();
       coarse_threshold_.update(deviation);
@@ -217,8 +218,8 @@ PointToPointIcpResult LidarOdometry::alignWithRecovery(const std::vector<Eigen::
     PointToPointIcpResult again =
         alignPointToPoint(source, map, *last, icpParams(config_, wide, convergence), &icp_);
     // Compare both at the same (narrow) threshold.
-    const PointToPointIcpResult check =
-        alignPointToPoint(source, map, again.pose, icpParams(config_, threshold, convergence), &icp_);
+    const PointToPointIcpResult check = alignPointToPoint(
+        source, map, again.pose, icpParams(config_, threshold, convergence), &icp_);
     if (check.correspondences > icp.correspondences) {
       icp = check;
       icp.iterations += again.iterations;
@@ -227,8 +228,8 @@ PointToPointIcpResult LidarOdometry::alignWithRecovery(const std::vector<Eigen::
   }
   if (config_.fine_threshold > 0.0 && threshold > config_.fine_threshold) {
     const int before = icp.iterations;
-    icp = alignPointToPoint(source, map, icp.pose, icpParams(config_, config_.fine_threshold, convergence),
-                            &icp_);
+    icp = alignPointToPoint(source, map, icp.pose,
+                            icpParams(config_, config_.fine_threshold, convergence), &icp_);
     icp.iterations += before;
   }
   return icp;

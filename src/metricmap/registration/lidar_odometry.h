@@ -74,8 +74,7 @@ class LidarOdometry {
   /// wide threshold (at most `cap` when > 0) when too few pairs are found; then refined with
   /// the fine threshold when the threshold is wider.
   PointToPointIcpResult alignWithRecovery(const std::vector<Eigen::Vector3d>& source,
-                                          const VoxelHashMap& map,
-                                          const Eigen::Isometry3d& initial,
+                                          const VoxelHashMap& map, const Eigen::Isometry3d& initial,
                                           const Eigen::Isometry3d* last, double threshold,
                                           double cap, double convergence, bool& restarted);
   template <class Scan>

@@ -31,9 +31,9 @@ std::vector<std::size_t> selectFrames(const std::vector<std::size_t>& frames, Sc
   for (std::size_t k = 0; k < frames.size(); ++k) {
     if (frames[k] >= n) source.scan(frames[k]);  // throws InputError naming the source
     if (k > 0 && frames[k] <= frames[k - 1]) {
-      throw std::invalid_argument("frames must be in acquisition order without repeats: " +
-                                  std::to_string(frames[k]) + " follows " +
-                                  std::to_string(frames[k - 1]));
+      throw std::invalid_argument(
+          "frames must be in acquisition order without repeats: " + std::to_string(frames[k]) +
+          " follows " + std::to_string(frames[k - 1]));
     }
   }
   return frames;

@@ -44,9 +44,9 @@ struct OdometryRunOptions {
 struct OdometryFrame {
   std::size_t index = 0;  ///< the scan's index in the source
   std::string name;
-  double stamp = 0.0;   ///< NaN when unknown
+  double stamp = 0.0;  ///< NaN when unknown
   OdometryResult result;
-  double ms = 0.0;      ///< registration time (reading excluded)
+  double ms = 0.0;  ///< registration time (reading excluded)
   /// \brief Motion since the previous frame compared with the reference's (output convention):
   /// translation (m) and rotation (deg) of (ref_{k-1}^-1 ref_k)^-1 (est_{k-1}^-1 est_k).
   std::optional<double> diff_m, diff_deg;
@@ -62,7 +62,7 @@ struct OdometryRun {
   LidarOdometryConfig config;  ///< as used (after the sensor profile)
   SensorProfile profile;       ///< what the first scan gave
   bool deskewed = false;
-  std::string convention;      ///< "kitti camera 0" or "sensor"
+  std::string convention;  ///< "kitti camera 0" or "sensor"
   double read_seconds = 0.0;
   /// \brief The source's reference poses of the frames, in the output convention (empty when
   /// the source has none).
@@ -73,7 +73,8 @@ struct OdometryRun {
 };
 
 /// \brief Called after each frame (progress).
-using OdometryObserver = std::function<void(const OdometryFrame&, std::size_t done, std::size_t total)>;
+using OdometryObserver =
+    std::function<void(const OdometryFrame&, std::size_t done, std::size_t total)>;
 
 /// \brief Register the selected scans of `source` in order.
 /// \throws InputError naming a scan that cannot be read or registered
