@@ -15,6 +15,7 @@ void addDepthToCloudCommand(CLI::App& app);
 void addHeightMapCommand(CLI::App& app);
 void addKittiCommand(CLI::App& app);
 void addOdometryCommand(CLI::App& app);
+void addMapCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
 void addOccupancyCommand(CLI::App& app);
 void addEvaluateCommand(CLI::App& app);

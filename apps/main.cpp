@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
   metricmap::cli::addHeightMapCommand(app);
   metricmap::cli::addKittiCommand(app);
   metricmap::cli::addOdometryCommand(app);
+  metricmap::cli::addMapCommand(app);
   metricmap::cli::addViewCommand(app);
   metricmap::cli::addOccupancyCommand(app);
   metricmap::cli::addEvaluateCommand(app);
