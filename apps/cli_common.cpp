@@ -15,6 +15,7 @@
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/file_identity.h"
+#include "metricmap/occupancy/octomap_file_check.h"
 #include "table.h"
 
 namespace metricmap::cli {
@@ -73,6 +74,18 @@ const CLI::Validator kFiniteNonNegative(
     },
     "NONNEGATIVE");
 
+const CLI::Validator kCellEdge(
+    [](std::string& s) -> std::string {
+      double v = 0.0;
+      std::string why = checkedDouble(s, v);
+      if (why.empty() && !(v >= kOctomapMinResolution && v <= kOctomapMaxResolution)) {
+        why = "'" + quoteForMessage(s) +
+              "' is outside the cell edges a map file can hold (0.0001 to 1000 m)";
+      }
+      return why;
+    },
+    "EDGE");
+
 const CLI::Validator kCount(
     [](std::string& s) -> std::string {
       if (s.empty() || s.size() > 18 || s.find_first_not_of("0123456789") != std::string::npos) {
@@ -81,6 +94,24 @@ const CLI::Validator kCount(
       return std::string();
     },
     "COUNT");
+
+CLI::Validator countIn(unsigned long long min, unsigned long long max) {
+  return CLI::Validator(
+      [min, max](std::string& s) -> std::string {
+        const std::string range = std::to_string(min) + " to " + std::to_string(max);
+        if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos)
+          return "must be a whole number from " + range + ", got '" + quoteForMessage(s) + "'";
+        const std::size_t nz = s.find_first_not_of('0');
+        const std::string digits = nz == std::string::npos ? "0" : s.substr(nz);
+        const std::string top = std::to_string(max);
+        const bool above =
+            digits.size() > top.size() || (digits.size() == top.size() && digits > top);
+        if (above || std::stoull(digits) < min)
+          return "'" + quoteForMessage(s) + "' is out of range: " + range;
+        return std::string();
+      },
+      "COUNT");
+}
 
 const CLI::Validator kOutputFile(
     [](std::string& s) -> std::string {
@@ -108,6 +139,42 @@ std::string quotePath(const std::string& path) {
 }
 
 }  // namespace
+
+void requireExtension(const std::string& option, const std::string& path,
+                      const std::vector<std::string>& extensions, const std::string& format) {
+  if (path.empty()) return;
+  for (const std::string& ext : extensions) {
+    if (path.size() > ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0 &&
+        path[path.size() - ext.size() - 1] != '/')
+      return;
+  }
+  std::string list;
+  for (std::size_t i = 0; i < extensions.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == extensions.size() ? " or " : ", ") + extensions[i];
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash + 1);
+  throw UsageError(option + " '" + quotePath(path) + "': " +
+                   (has_ext ? "the extension '" + quoteForMessage(path.substr(dot)) + "'"
+                            : std::string("a name without extension")) +
+                   " does not name what this option writes (" + format + "): use " + list);
+}
+
+std::vector<std::size_t> parseFramesOption(const std::string& text) {
+  std::vector<std::size_t> f;
+  try {
+    f = parseFrameList(text);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--frames: ") + e.what());
+  }
+  for (std::size_t k = 1; k < f.size(); ++k) {
+    if (f[k] <= f[k - 1]) {
+      throw UsageError("--frames: frames must be in acquisition order without repeats: " +
+                       std::to_string(f[k]) + " follows " + std::to_string(f[k - 1]));
+    }
+  }
+  return f;
+}
 
 void requireDistinctFiles(const RolePaths& inputs, const RolePaths& outputs) {
   const std::optional<FileClash> clash = findFileClash(inputs, outputs);

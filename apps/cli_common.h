@@ -37,8 +37,17 @@ extern const CLI::Validator kFinitePositiveFloat;
 /// \brief A finite number >= 0.
 extern const CLI::Validator kFiniteNonNegative;
 
+/// \brief A voxel or map cell edge (m) that a file written with it can be read back with:
+/// finite, within OctoMap's accepted `res` range (0.0001 to 1000 m, kOctomapMinResolution..);
+/// the map_server YAML and its origin get the same range.
+extern const CLI::Validator kCellEdge;
+
 /// \brief A whole number >= 0 written in decimal digits.
 extern const CLI::Validator kCount;
+
+/// \brief A whole number in [min, max] written in decimal digits: checked against the range of
+/// the type it is stored in before it is narrowed (issue 24, class 9).
+CLI::Validator countIn(unsigned long long min, unsigned long long max);
 
 /// \brief An output file name: not empty (`--out ''` would write nothing and succeed).
 extern const CLI::Validator kOutputFile;
@@ -56,6 +65,12 @@ using RolePaths = std::vector<std::pair<std::string, std::string>>;
 /// output staged: the message names both roles and both paths.
 void requireDistinctFiles(const RolePaths& inputs, const RolePaths& outputs);
 
+/// \brief Usage error (exit 2) unless `path` ends in one of `extensions` (with the dot, lowercase):
+/// an output gets the format its option writes, and its name must say so (issue 24, class 10).
+/// `format` names that format in the message. An empty path passes.
+void requireExtension(const std::string& option, const std::string& path,
+                      const std::vector<std::string>& extensions, const std::string& format);
+
 /// \brief requireDistinctFiles with no inputs (two outputs naming one file).
 void requireDistinctOutputs(const RolePaths& outputs);
 
@@ -66,6 +81,11 @@ RolePaths withRole(const std::string& role, const std::vector<std::string>& path
 /// when `with_poses`, the pose file ("poses file") of `sequence` under `root`.
 RolePaths kittiInputs(const std::string& root, const std::string& sequence,
                       const std::vector<std::size_t>& frames, bool with_poses);
+
+/// \brief The frames of a `--frames` list (parseFrameList), which must be in acquisition order
+/// without repeats as for `odometry`: a repeated frame would count one scan twice (issue 24,
+/// class 7). \throws UsageError "--frames: ..." (exit 2)
+std::vector<std::size_t> parseFramesOption(const std::string& text);
 
 /// \brief Keep standard input, output and error open: a closed one is reopened on /dev/null
 /// (stdout and stderr read-only, so that writing the report fails) so that no output file is

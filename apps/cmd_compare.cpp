@@ -152,6 +152,16 @@ void plot(const std::vector<Record>& records, const CompareOptions& o, const std
 
 void runCompare(const CompareOptions& o) {
   requireDistinctFiles(withRole("input", o.files), {{"--out", o.out}, {"--plot", o.plot}});
+  if (o.format == "csv") {
+    requireExtension("--out", o.out, {".csv"}, "CSV, as --format csv");
+  } else if (o.format == "json") {
+    requireExtension("--out", o.out, {".json"}, "JSON, as --format json");
+  } else if (o.format == "markdown") {
+    requireExtension("--out", o.out, {".md", ".txt"}, "Markdown, as --format markdown");
+  } else {
+    requireExtension("--out", o.out, {".txt"}, "an aligned text table, as --format " + o.format);
+  }
+  requireExtension("--plot", o.plot, {".png", ".svg"}, "a PNG or SVG picture");
   std::vector<StudyConfig> configs;
   for (const std::string& text : o.configs) {
     StudyConfig c;

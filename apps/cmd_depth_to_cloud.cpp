@@ -29,6 +29,7 @@ void run(const DepthToCloudOptions& o) {
   requireDistinctFiles(
       {{"depth image", o.depth}, {"--rgb image", o.rgb}, {"--camera file", o.camera.camera_file}},
       {{"--out", o.out}});
+  requireExtension("--out", o.out, {".pcd"}, "a PCD cloud");
   const DepthImage depth = readDepthImage(o.depth);
   const CameraIntrinsics k = resolveIntrinsics(o.camera, depth);
   const double scale = resolveDepthScale(o.camera, k, depth);

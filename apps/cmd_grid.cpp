@@ -154,6 +154,8 @@ GridOutcome buildRanks(const GridOptions& o, const Ranks& ranks) {
 
 void runGrid(GridOptions o) {
   requireDistinctFiles(withRole("input", o.files), {{"--out", o.out}, {"--cells", o.cells}});
+  requireExtension("--out", o.out, {".pcd"}, "a PCD cloud");
+  requireExtension("--cells", o.cells, {".csv"}, "CSV");
   if (o.distributed && o.origin_given && o.origin != "world")
     throw UsageError("--distributed needs --origin world (cells must be world-aligned to merge)");
   const Ranks ranks(o.distributed);

@@ -1,6 +1,7 @@
 // metricmap heightmap DEPTH...: height-binned top-down map (obstacles, explored, layers, counts).
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -225,12 +226,12 @@ void addHeightMapCommand(CLI::App& app) {
       ->check(kFinitePositive);
   sub->add_option("--map-size", o->map_size, "Cells per side")
       ->required()
-      ->check(kCount & kFinitePositive);
+      ->check(countIn(1, 0xFFFFFFFFull));  // side^2 cells must be countable in 64 bits
   sub->add_option("--z-bins", o->z_bins, "Height bin edges a,b[,...] (strictly increasing)")
       ->required();
   sub->add_option("--obstacle-threshold", o->obstacle_threshold,
                   "Middle-bin count that marks an obstacle")
-      ->check(kCount)
+      ->check(countIn(0, std::numeric_limits<std::uint32_t>::max()))
       ->capture_default_str();
   sub->add_option("--out-prefix", o->out_prefix,
                   "Writes PREFIX_obstacles.png, _explored.png, _layers.png, _counts.npy")

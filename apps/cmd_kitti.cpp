@@ -1,6 +1,7 @@
 // metricmap kitti ROOT --sequence NN: scans + poses -> global cloud and a 2D occupancy map.
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <random>
 
@@ -25,6 +26,25 @@
 namespace metricmap::cli {
 namespace {
 
+/// --voxel: 0 (off) or a voxel edge a float holds as a normal number (the voxel grid is float:
+/// 1e308 would become inf and be reported as such).
+const CLI::Validator kVoxelSize(
+    [](std::string& s) -> std::string {
+      double v = 0.0;
+      try {
+        v = parseFiniteDouble(s, "--voxel");
+      } catch (const std::invalid_argument&) {
+        return "'" + quoteForMessage(s) + "' is not a finite decimal number";
+      }
+      if (v < 0.0) return "must be a finite number >= 0, got '" + quoteForMessage(s) + "'";
+      if (v != 0.0 &&
+          !(v >= std::numeric_limits<float>::min() && v <= std::numeric_limits<float>::max()))
+        return "'" + quoteForMessage(s) +
+               "' is outside the single-precision range (1.2e-38 to 3.4e38)";
+      return std::string();
+    },
+    "VOXEL");
+
 struct KittiOptions {
   std::string root, sequence = "00", frames, world = "camera", out_cloud, out_map;
   std::string pcd_format = "binary", map_plane = "xz", format = "table", refine, perturb;
@@ -46,12 +66,11 @@ std::vector<std::size_t> selectFrames(const KittiOptions& o) {
   if (o.frames.empty() && static_cast<unsigned long long>(o.count) > kMaxFrameList) {
     throw CLI::ValidationError("--count", "at most " + std::to_string(kMaxFrameList) + " frames");
   }
+  if (!o.frames.empty()) return parseFramesOption(o.frames);
   try {
-    return parseFrameList(o.frames.empty() ? std::to_string(o.first) + "-" +
-                                                 std::to_string(o.first + o.count - 1)
-                                           : o.frames);
+    return parseFrameList(std::to_string(o.first) + "-" + std::to_string(o.first + o.count - 1));
   } catch (const std::invalid_argument& e) {
-    throw CLI::ValidationError("--frames", e.what());
+    throw CLI::ValidationError("--first", e.what());
   }
 }
 
@@ -175,6 +194,11 @@ void run(const KittiOptions& o) {
                      {{"--out-trinary", files.pgm}, {"--out-trinary (its .yaml)", files.yaml}});
     }
     requireDistinctFiles(kittiInputs(o.root, o.sequence, frames, o.poses != "odometry"), outputs);
+    requireExtension("--out-cloud", o.out_cloud, {".pcd"}, "a PCD cloud");
+    requireExtension("--out-map", o.out_map, {".pgm"}, "a map_server PGM with its YAML");
+    requireExtension("--out-poses", o.out_poses, {".txt"}, "KITTI pose text");
+    requireExtension("--out-octomap", o.out_octomap, {".bt", ".ot"}, "an OctoMap file");
+    requireExtension("--out-trinary", o.out_trinary, {".pgm"}, "a map_server PGM with its YAML");
   }
   const KittiSequence seq{o.root, o.sequence};
   for (std::size_t f : frames) {  // every scan must exist before any work is done
@@ -343,10 +367,12 @@ void addKittiCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--max-range", m.max_range, "Drop returns further than this (m)")
       ->check(kFinitePositive);
-  sub->add_option("--min-height", m.min_height, "Map only points at or above this height (m)");
-  sub->add_option("--max-height", m.max_height, "Map only points at or below this height (m)");
+  sub->add_option("--min-height", m.min_height, "Map only points at or above this height (m)")
+      ->check(kFinite);
+  sub->add_option("--max-height", m.max_height, "Map only points at or below this height (m)")
+      ->check(kFinite);
   sub->add_option("--voxel", m.voxel, "Per-scan and global voxel size (m), 0: off")
-      ->check(kFiniteNonNegative)
+      ->check(kVoxelSize)
       ->capture_default_str();
   sub->add_option("--out-cloud", o->out_cloud, "Write the global cloud (.pcd)")->check(kOutputFile);
   addPcdFormatOption(*sub, o->pcd_format);
@@ -356,11 +382,11 @@ void addKittiCommand(CLI::App& app) {
   sub->add_option("--map-plane", o->map_plane, "Projection plane")
       ->check(CLI::IsMember({"xz", "xy", "yz"}))
       ->capture_default_str();
-  sub->add_option("--map-resolution", m.map_resolution, "Map cell size (m)")
-      ->check(kFinitePositive)
+  sub->add_option("--map-resolution", m.map_resolution, "Map cell size (m), 0.0001 to 1000")
+      ->check(kCellEdge)
       ->capture_default_str();
   sub->add_option("--min-hits", o->min_hits, "Hits that make a cell occupied")
-      ->check(kCount & kFinitePositive)
+      ->check(countIn(1, std::numeric_limits<std::uint32_t>::max()))
       ->capture_default_str();
   sub->add_option("--refine", o->refine,
                   "Align each scan to --refine-target (pcl::IterativeClosestPoint or "
@@ -372,7 +398,7 @@ void addKittiCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--target-voxel", m.registration.target_voxel,
                   "Cell of the accumulated registration target (m)")
-      ->check(kFinitePositive)
+      ->check(kFinitePositiveFloat)
       ->capture_default_str();
   sub->add_option("--out-poses", o->out_poses,
                   "Write the poses used (refined, perturbed or given), one 3x4 row-major line "
@@ -399,8 +425,8 @@ void addKittiCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--occupancy-resolution", o->occupancy_resolution,
                   "Also build the 3D log-odds occupancy map (ray casting, OctoMap's model) with "
-                  "voxels of this size (m)")
-      ->check(kFinitePositive);
+                  "voxels of this size (m), 0.0001 to 1000")
+      ->check(kCellEdge);
   sub->add_option("--occupancy-max-range", o->occupancy_max_range,
                   "Beams longer than this are cut there and mark no hit (m)")
       ->check(kFinitePositive)

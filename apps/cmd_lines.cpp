@@ -26,6 +26,7 @@ struct LinesOptions {
   std::string file, preset, format = "table", svg, png, steps, purge = "before-merge";
   ScanLineFormat scan_format;
   bool generic = false;
+  std::string generic_option;  ///< the first layout option given (refused with --preset)
   long long scan = 0;
   bool all = false;
   // Defaults: the library's (SplitAndMergeParams), angles shown in degrees.
@@ -41,6 +42,10 @@ struct LinesOptions {
 constexpr double kDeg = M_PI / 180.0;
 
 ScanLog readLog(const LinesOptions& o) {
+  if (o.generic && !o.preset.empty()) {  // the preset would silently override the option
+    throw UsageError(o.generic_option + ": --preset " + o.preset +
+                     " sets the whole log layout; give --preset or the layout options, not both");
+  }
   if (o.generic && o.preset.empty()) {
     try {
       validateScanLineFormat(o.scan_format);  // option values: a usage error
@@ -90,6 +95,8 @@ nlohmann::json segmentJson(const LineSegment& s) {
 
 void runLines(const LinesOptions& o) {
   requireDistinctOutputs({{"--png", o.png}, {"--svg", o.svg}, {"--steps", o.steps}});
+  requireExtension("--png", o.png, {".png"}, "a PNG picture");
+  requireExtension("--svg", o.svg, {".svg"}, "an SVG picture");
   const ScanLog log = readLog(o);
   const std::size_t n_scans = log.scans.size();
   if (!o.all && static_cast<std::size_t>(o.scan) >= n_scans) {
@@ -185,26 +192,31 @@ void addLinesCommand(CLI::App& app) {
   sub->add_option("--preset", o->preset, "Known log layout")
       ->check(CLI::IsMember({"urg04lx-mines"}));
   ScanLineFormat& f = o->scan_format;
-  auto generic = [o](const std::string&) { o->generic = true; };
+  auto generic = [o](const char* name) {
+    return [o, name](const std::string&) {
+      if (!o->generic) o->generic_option = name;
+      o->generic = true;
+    };
+  };
   sub->add_option("--skip-tokens", f.skip_tokens, "Tokens before the ranges")
       ->check(kCount)
-      ->each(generic);
-  sub->add_option("--count", f.count, "Ranges per scan")->check(kCount)->each(generic);
+      ->each(generic("--skip-tokens"));
+  sub->add_option("--count", f.count, "Ranges per scan")->check(kCount)->each(generic("--count"));
   sub->add_option("--angle-min-deg", f.angle_min_deg, "Angle of beam 0")
       ->check(kFinite)
-      ->each(generic);
+      ->each(generic("--angle-min-deg"));
   sub->add_option("--angle-increment-deg", f.angle_increment_deg, "Angle between beams")
       ->check(kFinite)
-      ->each(generic);
+      ->each(generic("--angle-increment-deg"));
   sub->add_option("--range-scale", f.range_scale, "Raw range x scale = metres")
       ->check(kFinitePositive)
-      ->each(generic);
+      ->each(generic("--range-scale"));
   sub->add_option("--min-range", f.min_range, "Smaller ranges (m) are invalid")
       ->check(kFiniteNonNegative)
-      ->each(generic);
+      ->each(generic("--min-range"));
   sub->add_option("--max-range", f.max_range, "Larger ranges (m) are invalid")
       ->check(kFinite)
-      ->each(generic);
+      ->each(generic("--max-range"));
   auto* scan = sub->add_option("--scan", o->scan, "Scan to segment (0-based)")->check(kCount);
   sub->add_flag("--all", o->all, "Segment every scan")->excludes(scan);
   sub->add_option("--distance-threshold", o->distance, "d_th: split distance, metres")

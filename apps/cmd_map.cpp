@@ -149,6 +149,8 @@ void addMapCommand(CLI::App& app) {
                                      {"--out-map (its heat map)", f.heat_png}});
     }
     requireDistinctFiles(sourceInputs(o->source), outputs);
+    requireExtension("--out-map", o->out_map, {".pgm"}, "a map_server PGM with its YAML");
+    requireExtension("--out-cloud", o->out_cloud, {".pcd"}, "a PCD cloud");
     run(*o);
   });
 }

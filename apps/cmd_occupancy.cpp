@@ -45,6 +45,7 @@ struct OccupancyOptions {
   std::string pcd_format = "binary";
   double resolution = kUnset, max_range = kUnset;
   bool resolution_given = false, max_range_given = false, distributed = false;
+  bool sequence_given = false, world_given = false;
 };
 
 bool endsWith(const std::string& s, const std::string& suffix) {
@@ -119,12 +120,7 @@ void castScans(const OccupancyOptions& o, const Ranks& ranks, LogOddsMap& map, T
   };
   if (o.inputs.size() == 1 && isDirectory(o.inputs[0])) {
     if (o.frames.empty()) throw CLI::ValidationError("frames", "a KITTI root needs --frames");
-    std::vector<std::size_t> frames;
-    try {
-      frames = parseFrameList(o.frames);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--frames: ") + e.what());
-    }
+    const std::vector<std::size_t> frames = parseFramesOption(o.frames);
     const auto [first, last] = ranks.share(frames.size());
     const KittiWorld world = o.world == "camera" ? KittiWorld::Camera : KittiWorld::Velodyne;
     castKittiFrames(map, KittiSequence{o.inputs[0], o.sequence}, frames, first, last, world, tot,
@@ -155,9 +151,38 @@ void reduceTotals(const Ranks& ranks, Totals& tot) {
   tot.insert_s = seconds[1];
 }
 
+/// Options that do not apply to the inputs given are refused, never ignored (issue 24, class 6):
+/// a .bt/.ot map is exported as it is (no scan options); PCD scans carry their own pose (no KITTI
+/// options); --band only shapes --out-map.
+void refuseIgnoredOptions(const OccupancyOptions& o, bool from_file, bool kitti) {
+  const std::vector<std::pair<const char*, bool>> scan_options = {
+      {"--resolution", o.resolution_given},
+      {"--max-range", o.max_range_given},
+      {"--frames", !o.frames.empty()},
+      {"--sequence", o.sequence_given},
+      {"--world", o.world_given}};
+  for (const auto& [option, given] : scan_options) {
+    if (!given) continue;
+    const std::string name = option;
+    if (from_file) {
+      throw UsageError(name + ": '" + quoteForMessage(o.inputs[0]) +
+                       "' is a map, exported as it is: scan options do not apply to it");
+    }
+    if (!kitti && (name == "--frames" || name == "--sequence" || name == "--world")) {
+      throw UsageError(name +
+                       " selects KITTI scans: the inputs are PCD files (each one's pose is "
+                       "its VIEWPOINT)");
+    }
+  }
+  if (!o.band.empty() && o.out_map.empty())
+    throw UsageError("--band is the height band of --out-map: give --out-map too");
+}
+
 void run(const OccupancyOptions& o, const Ranks& ranks) {
   const bool from_file =
       o.inputs.size() == 1 && (endsWith(o.inputs[0], ".bt") || endsWith(o.inputs[0], ".ot"));
+  refuseIgnoredOptions(o, from_file,
+                       !from_file && o.inputs.size() == 1 && isDirectory(o.inputs[0]));
   if (!o.out_map.empty() && o.band.empty())
     throw CLI::ValidationError("band", "--out-map needs --band zmin,zmax");
   if (!o.out_map.empty() && o.world == "camera")
@@ -167,11 +192,7 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
   if (!o.band.empty()) band = parseBand(o.band);
   RolePaths inputs = withRole("input", o.inputs);
   if (!from_file && o.inputs.size() == 1 && isDirectory(o.inputs[0]) && !o.frames.empty()) {
-    try {
-      inputs = kittiInputs(o.inputs[0], o.sequence, parseFrameList(o.frames), true);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--frames: ") + e.what());
-    }
+    inputs = kittiInputs(o.inputs[0], o.sequence, parseFramesOption(o.frames), true);
   }
   requireDistinctFiles(inputs,
                        {{"--out", o.out_bt},
@@ -180,12 +201,11 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
                         {"--out-map", o.out_map},
                         {"--out-map (its .yaml)", o.out_map.empty() ? "" : yamlOf(o.out_map)},
                         {"--map-preview", o.map_preview}});
-  for (const auto& [option, path] :
-       {std::pair<std::string, std::string>{"--out", o.out_bt}, {"--out-ot", o.out_ot}}) {
-    if (!path.empty() && !endsWith(path, ".bt") && !endsWith(path, ".ot"))
-      throw UsageError(option + ": an OctoMap file ends in .bt or .ot, got '" +
-                       quoteForMessage(path) + "'");
-  }
+  requireExtension("--out", o.out_bt, {".bt"}, "an OctoMap .bt, maximum likelihood");
+  requireExtension("--out-ot", o.out_ot, {".ot"}, "an OctoMap .ot, log-odds");
+  requireExtension("--out-cloud", o.out_cloud, {".pcd"}, "a PCD cloud");
+  requireExtension("--out-map", o.out_map, {".pgm"}, "a map_server PGM with its YAML");
+  requireExtension("--map-preview", o.map_preview, {".png"}, "a PNG picture");
   if (!o.map_preview.empty() && o.out_map.empty())
     throw UsageError("--map-preview is a picture of --out-map: give --out-map too");
   Totals tot;
@@ -282,7 +302,8 @@ void addOccupancyCommand(CLI::App& app) {
                   "A KITTI root (with --frames), PCD files (VIEWPOINT = sensor pose), or one "
                   ".bt/.ot map to export")
       ->required();
-  sub->add_option("--resolution", o->resolution, "Voxel edge (m), > 0")->check(kFinitePositive);
+  sub->add_option("--resolution", o->resolution, "Voxel edge (m), 0.0001 to 1000")
+      ->check(kCellEdge);
   sub->add_option("--max-range", o->max_range, "Beams are cut here and mark no hit (m), > 0")
       ->check(kFinitePositive);
   sub->add_option("--sequence", o->sequence, "KITTI sequence")->capture_default_str();
@@ -308,6 +329,8 @@ void addOccupancyCommand(CLI::App& app) {
     OccupancyOptions opts = *o;
     opts.resolution_given = sub->count("--resolution") > 0;
     opts.max_range_given = sub->count("--max-range") > 0;
+    opts.sequence_given = sub->count("--sequence") > 0;
+    opts.world_given = sub->count("--world") > 0;
     const bool from_file = opts.inputs.size() == 1 &&
                            (endsWith(opts.inputs[0], ".bt") || endsWith(opts.inputs[0], ".ot"));
     if (opts.distributed && from_file)

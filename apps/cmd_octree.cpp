@@ -26,6 +26,8 @@ struct OctreeOptions {
 
 void runOctree(const OctreeOptions& o) {
   requireDistinctFiles({{"input", o.file}}, {{"--out", o.out}, {"--leaves", o.leaves}});
+  requireExtension("--out", o.out, {".pcd"}, "a PCD cloud");
+  requireExtension("--leaves", o.leaves, {".csv"}, "CSV");
   const LoadedCloud loaded = loadTimed(o.file);
   const auto& cloud = loaded.cloud;
 

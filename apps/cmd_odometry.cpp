@@ -176,6 +176,7 @@ void addOdometryCommand(CLI::App& app) {
     checkRangeOptions(o->ranges);
     checkSourceOptions(o->source);
     requireDistinctFiles(sourceInputs(o->source), {{"--out-poses", o->out_poses}});
+    requireExtension("--out-poses", o->out_poses, {".txt"}, "pose text");
     run(*o);
   });
 }

@@ -113,6 +113,7 @@ void run(const ViewOptions& o) {
     RolePaths inputs = withRole("input", o.files);
     inputs.emplace_back("--segments file", o.segments);
     requireDistinctFiles(inputs, {{"--screenshot", o.screenshot}});
+    requireExtension("--screenshot", o.screenshot, {".png"}, "a PNG picture");
   }
   // Every OctoMap file's voxels, expanded and drawn, within the budget: checked from the trees'
   // leaves before anything is expanded or a window opened.

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "metricmap/common/format_number.h"
 #include "metricmap/datasets/kitti_sequence.h"
 
 namespace metricmap::cli {
@@ -101,9 +102,9 @@ void applyRangeOptions(const RangeOptions& o, const std::string& profile, const 
   if (o.min_range) config.min_range = *o.min_range;
   if (o.voxel_size) config.voxel_size = *o.voxel_size;
   if (!(config.min_range < config.max_range) && !request.min_range && !request.max_range) {
-    throw UsageError("--min-range " + std::to_string(config.min_range) +
-                     " must be below the range window's maximum " +
-                     std::to_string(config.max_range) + " m");
+    throw UsageError("--min-range " + formatNumber(config.min_range) +
+                     " must be below the range window's maximum " + formatNumber(config.max_range) +
+                     " m");
   }
 }
 

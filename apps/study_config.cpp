@@ -4,6 +4,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "metricmap/common/parse_number.h"
 
@@ -37,25 +38,40 @@ bool parseCount(const std::string& s, std::size_t& v) {
 
 std::string parseStudyConfig(const std::string& text, StudyConfig& out) {
   bool seen[3] = {false, false, false};
-  std::istringstream is(text);
-  for (std::string item; std::getline(is, item, ',');) {
+  // Items split by hand: getline would drop a trailing empty item ("...,max_points=100,").
+  std::vector<std::string> items;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = text.find(',', start);
+    items.push_back(
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  for (const std::string& item : items) {
+    if (item.empty()) return "empty item in '" + quoteForMessage(text) + "'";
     const auto eq = item.find('=');
-    if (eq == std::string::npos) return "'" + item + "' is not key=value";
+    if (eq == std::string::npos) return "'" + quoteForMessage(item) + "' is not key=value";
     const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
+    const int index = key == "cell_size"       ? 0
+                      : key == "min_cell_size" ? 1
+                      : key == "max_points"    ? 2
+                                               : -1;
+    if (index >= 0 && seen[index]) return "'" + key + "' is given twice";
     if (key == "cell_size") {
       if (!parsePositive(value, out.cell_size))
-        return "cell_size must be a finite number > 0, got '" + value + "'";
+        return "cell_size must be a finite number > 0, got '" + quoteForMessage(value) + "'";
       seen[0] = true;
     } else if (key == "min_cell_size") {
       if (!parsePositive(value, out.min_cell_size))
-        return "min_cell_size must be a finite number > 0, got '" + value + "'";
+        return "min_cell_size must be a finite number > 0, got '" + quoteForMessage(value) + "'";
       seen[1] = true;
     } else if (key == "max_points") {
       if (!parseCount(value, out.max_points))
-        return "max_points must be a whole number >= 0, got '" + value + "'";
+        return "max_points must be a whole number from 0 to 4294967295, got '" +
+               quoteForMessage(value) + "'";
       seen[2] = true;
     } else {
-      return "unknown key '" + key + "' (cell_size, min_cell_size, max_points)";
+      return "unknown key '" + quoteForMessage(key) + "' (cell_size, min_cell_size, max_points)";
     }
   }
   if (!seen[0] || !seen[1] || !seen[2]) return "needs cell_size, min_cell_size and max_points";

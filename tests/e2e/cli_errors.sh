@@ -55,7 +55,7 @@ done
 expect 1 "$tmp/scan.bin" -- "$MM" info "$tmp/scan.bin"
 expect 1 "$tmp/cloud.txt" -- "$MM" info "$tmp/cloud.txt"
 expect 1 "$tmp/missing.pcd" -- "$MM" compare "$tmp/missing.pcd"
-expect 1 "$tmp/missing.pcd" -- "$MM" compare "$scan" "$tmp/missing.pcd" --out "$tmp/study.md"
+expect 1 "$tmp/missing.pcd" -- "$MM" compare "$scan" "$tmp/missing.pcd" --format markdown --out "$tmp/study.md"
 check "no table left when one input is bad" test ! -e "$tmp/study.md"
 
 # lines: bad scans and thresholds.

@@ -18,7 +18,7 @@ mkdir -p "$o"
 long_heightmap=("$MM" heightmap "$tum/TUM_depth.png" --camera "$tum/camera_primesense.json"
   --auto-floor --resolution 0.002 --map-size 5000 --z-bins 0.1,1 --out-prefix "$o/hm")
 long_kitti=("$MM" kitti "$k" --frames 0-5 --voxel 0 --out-cloud "$o/k.pcd" --pcd-format ascii
-  --out-poses "$o/poses" --out-map "$o/m.pgm" --map-resolution 0.05)
+  --out-poses "$o/poses.txt" --out-map "$o/m.pgm" --map-resolution 0.05)
 
 signum() { kill -l "$1"; }
 
@@ -106,8 +106,8 @@ bun=$D/pcl_test_pcd/bunny.pcd
 stale_case "g.tmp-$dead-0.pcd g.tmp-$dead-0.tmp-$dead-1.pcd" "other.tmp-$dead-0.pcd g.tmp-x-0.pcd g.tmp-$dead-0.csv" \
   "$MM" grid "$bun" --cell-size 0.01 --out "$o/g.pcd"
 stale_case "cells.tmp-$dead-12.csv" "g.tmp-$dead-0.pcd" "$MM" grid "$bun" --cell-size 0.01 --cells "$o/cells.csv"
-stale_case "poses.tmp-$dead-2 poses.tmp-$dead-2.tmp-$dead-3" "posesx.tmp-$dead-2" \
-  "$MM" kitti "$k" --frames 0 --out-poses "$o/poses"
+stale_case "poses.tmp-$dead-2.txt poses.tmp-$dead-2.tmp-$dead-3.txt" "posesx.tmp-$dead-2.txt" \
+  "$MM" kitti "$k" --frames 0 --out-poses "$o/poses.txt"
 stale_case "m.tmp-$dead-1.pgm m.tmp-$dead-2.yaml m.tmp-$dead-4.pcd" "" \
   "$MM" occupancy "$k" --frames 0 --resolution 0.5 --max-range 20 --out-map "$o/m.pgm" --band -1,1 --out-cloud "$o/m.pcd"
 stale_case "hm_counts.tmp-$dead-5.npy hm_layers.tmp-$dead-4.png" "" \

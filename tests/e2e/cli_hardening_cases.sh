@@ -75,7 +75,7 @@ expect 1 "$tmp/nodir/c.csv" -- "$MM" grid "$scan" --cell-size 1 --out "$tmp/g.pc
 check "grid: no means cloud when --cells fails" test ! -e "$tmp/g.pcd"
 expect 1 "$tmp/nodir/s.svg" -- "$MM" lines "$DATA/pythonrobotics_lidar01/lidar01.csv" --steps "$tmp/steps" --svg "$tmp/nodir/s.svg"
 check "lines: no step drawings when --svg fails" test ! -e "$tmp/steps"
-expect 1 "$tmp/nodir/p.svg" -- "$MM" compare "$scan" --out "$tmp/s.md" --plot "$tmp/nodir/p.svg"
+expect 1 "$tmp/nodir/p.svg" -- "$MM" compare "$scan" --format markdown --out "$tmp/s.md" --plot "$tmp/nodir/p.svg"
 check "compare: no table when --plot fails" test ! -e "$tmp/s.md"
 mkfifo "$tmp/fifo.pcd"
 expect 1 "not a regular file" -- "$MM" grid "$scan" --cell-size 1 --out "$tmp/fifo.pcd"

@@ -26,7 +26,7 @@ expect 1 "use a coarser map resolution" -- "$MM" kitti "$k" --frames 0-1 \
 check "nothing written for the refused map" test -z "$(ls -A "$o")"
 # Bands that select nothing or make no sense.
 expect 2 "min range" -- "$MM" kitti "$k" --frames 0 --min-range 10 --max-range 5
-expect 2 "NaN" -- "$MM" kitti "$k" --frames 0 --min-height nan
+expect 2 "--min-height" -- "$MM" kitti "$k" --frames 0 --min-height nan
 expect 1 "the map is empty" -- "$MM" kitti "$k" --frames 0 --min-height 100 \
   --out-map "$o/empty.pgm" --out-cloud "$o/empty.pcd" --out-poses "$o/empty.txt"
 check "nothing written for the empty map" test -z "$(ls -A "$o")"
@@ -35,10 +35,12 @@ expect 2 "--target-voxel" -- "$MM" kitti "$k" --frames 0 --target-voxel 0
 expect 1 "$o/nodir/m.pgm" -- "$MM" kitti "$k" --frames 0-1 --out-cloud "$o/g.pcd" \
   --out-poses "$o/p.txt" --out-map "$o/nodir/m.pgm"
 check "nothing written when one output fails" test -z "$(ls -A "$o")"
-# A directory with a dot and a map name without an extension: the YAML and PNGs stay beside it.
+# A directory with a dot: the YAML and PNGs stay beside the map. A map name without an extension
+# names no format and is refused (issue 24, class 10).
 mkdir -p "$o/run.1"
-check "map name without extension in a dotted directory" "$MM" kitti "$k" --frames 0 \
-  --out-map "$o/run.1/m" --format json
+expect 2 "--out-map" -- "$MM" kitti "$k" --frames 0 --out-map "$o/run.1/m"
+check "map in a dotted directory" "$MM" kitti "$k" --frames 0 \
+  --out-map "$o/run.1/m.pgm" --format json
 check "its YAML is m.yaml in run.1" test -s "$o/run.1/m.yaml" -a -s "$o/run.1/m_heat.png"
 rm -rf "$o/run.1"
 

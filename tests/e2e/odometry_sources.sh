@@ -64,26 +64,26 @@ check "a list file gives the folder's poses" cmp -s "$tmp/o_pcd.txt" "$tmp/o_lis
 
 # Refusals: one line, nothing written.
 mkdir -p "$tmp/empty" "$tmp/mixed" "$tmp/bad"
-expect 1 "no .pcd, .ply, .bin or .npy scan" -- "$MM" odometry "$tmp/empty" --out-poses "$out.x"
+expect 1 "no .pcd, .ply, .bin or .npy scan" -- "$MM" odometry "$tmp/empty" --out-poses "$tmp/never.txt"
 cp "$balm/full60.pcd" "$tmp/mixed/a.pcd"; cp "$tmp/npy/full61.npy" "$tmp/mixed/b.npy"
-expect 1 "mixed scan formats" -- "$MM" odometry "$tmp/mixed" --out-poses "$out.x"
+expect 1 "mixed scan formats" -- "$MM" odometry "$tmp/mixed" --out-poses "$tmp/never.txt"
 for f in full60 full61 full62; do cp "$balm/$f.pcd" "$tmp/bad/"; done
 printf '1\n2\n' >"$tmp/bad/times.txt"
-expect 1 "2 stamp(s) for 3 scan(s)" -- "$MM" odometry "$tmp/bad" --out-poses "$out.x"
+expect 1 "2 stamp(s) for 3 scan(s)" -- "$MM" odometry "$tmp/bad" --out-poses "$tmp/never.txt"
 printf '1\n3\n2\n' >"$tmp/bad/times.txt"
-expect 1 "is not after the one before" -- "$MM" odometry "$tmp/bad" --out-poses "$out.x"
+expect 1 "is not after the one before" -- "$MM" odometry "$tmp/bad" --out-poses "$tmp/never.txt"
 printf '1\n2\n3\n' >"$tmp/bad/times.txt"
 head -2 "$balm/poses.txt" >"$tmp/bad/poses.txt"
-expect 1 "2 pose line(s) for 3 scan(s)" -- "$MM" odometry "$tmp/bad" --out-poses "$out.x"
+expect 1 "2 pose line(s) for 3 scan(s)" -- "$MM" odometry "$tmp/bad" --out-poses "$tmp/never.txt"
 rm "$tmp/bad/poses.txt"
 mkdir -p "$tmp/u8"
 printf 'VERSION 0.7\nFIELDS x y z t\nSIZE 4 4 4 1\nTYPE F F F U\nCOUNT 1 1 1 1\nWIDTH 1\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 1\nDATA ascii\n1 2 3 4\n' >"$tmp/u8/0.pcd"
-expect 1 "time field 't'" -- "$MM" odometry "$tmp/u8" --out-poses "$out.x"
-expect 2 "--frames" -- "$MM" odometry "$tmp/bad" --frames 2,1 --out-poses "$out.x"
-expect 2 "--frames" -- "$MM" odometry "$tmp/bad" --frames 0,0 --out-poses "$out.x"
-expect 1 "no scan 7" -- "$MM" odometry "$tmp/bad" --frames 0,7 --out-poses "$out.x"
+expect 1 "time field 't'" -- "$MM" odometry "$tmp/u8" --out-poses "$tmp/never.txt"
+expect 2 "--frames" -- "$MM" odometry "$tmp/bad" --frames 2,1 --out-poses "$tmp/never.txt"
+expect 2 "--frames" -- "$MM" odometry "$tmp/bad" --frames 0,0 --out-poses "$tmp/never.txt"
+expect 1 "no scan 7" -- "$MM" odometry "$tmp/bad" --frames 0,7 --out-poses "$tmp/never.txt"
 expect 2 "--profile" -- "$MM" odometry "$tmp/bad" --profile car
 expect 2 "times.txt" -- "$MM" odometry "$tmp/bad" --out-poses "$tmp/bad/times.txt"
-check "no pose file after any refusal" test ! -e "$out.x"
+check "no pose file after any refusal" test ! -e "$tmp/never.txt"
 check "the times file is intact" test "$(cat "$tmp/bad/times.txt" | wc -l)" -eq 3
 finish

@@ -11,6 +11,7 @@
 #include <boost/property_tree/xml_parser.hpp>
 #include <nlohmann/json.hpp>
 
+#include "metricmap/common/format_number.h"
 #include "metricmap/common/parse_number.h"
 #include "metricmap/exceptions.h"
 
@@ -97,7 +98,7 @@ CameraIntrinsics readPclGrabberXml(const std::string& path) {
       k.depth_scale = number("z_multiplication_factor");
       if (!(k.depth_scale > 0.0)) {
         throw std::invalid_argument("z_multiplication_factor must be > 0, got " +
-                                    std::to_string(k.depth_scale));
+                                    formatNumber(k.depth_scale));
       }
     }
     validateIntrinsics(k);

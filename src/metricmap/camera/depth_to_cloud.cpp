@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "metricmap/common/format_number.h"
+
 namespace metricmap {
 namespace {
 
@@ -12,7 +14,7 @@ void check(const DepthImage& depth, const CameraIntrinsics& k, double depth_scal
   validateIntrinsics(k);
   if (!std::isfinite(depth_scale) || !(depth_scale > 0.0)) {
     throw std::invalid_argument("depth scale must be a finite number > 0, got " +
-                                std::to_string(depth_scale));
+                                formatNumber(depth_scale));
   }
   if (depth.width <= 0 || depth.height <= 0) throw std::invalid_argument("empty depth image");
 }
@@ -41,7 +43,7 @@ pcl::PointCloud<PointT> project(const DepthImage& depth, const CameraIntrinsics&
       p.y = static_cast<float>((v - k.cy) * z / k.fy);
       p.z = static_cast<float>(z);
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-        throw std::invalid_argument("depth scale " + std::to_string(depth_scale) +
+        throw std::invalid_argument("depth scale " + formatNumber(depth_scale) +
                                     " times raw depth " + std::to_string(d) + " at pixel (" +
                                     std::to_string(u) + ", " + std::to_string(v) +
                                     ") gives a coordinate beyond float range");

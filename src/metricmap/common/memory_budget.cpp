@@ -26,8 +26,9 @@ std::atomic<std::uint64_t>& budget() {
   return b;
 }
 
+/// Rounded up, without overflow near 2^64 (bytes + 2^20 - 1 would wrap to "0 MiB").
 std::string mib(std::uint64_t bytes) {
-  return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB";
+  return std::to_string((bytes >> 20) + ((bytes & ((1u << 20) - 1)) != 0 ? 1 : 0)) + " MiB";
 }
 
 }  // namespace
@@ -75,12 +76,17 @@ std::uint64_t parseByteSize(const std::string& text, const std::string& what) {
 void checkMemory(std::uint64_t count, std::uint64_t item_bytes, const std::string& what) {
   const std::uint64_t limit = memoryBudget();
   if (item_bytes != 0 && count > limit / item_bytes) {
-    const long double need = static_cast<long double>(count) * item_bytes;
-    const std::uint64_t shown =
-        need >= static_cast<long double>(std::numeric_limits<std::uint64_t>::max())
-            ? std::numeric_limits<std::uint64_t>::max()
-            : static_cast<std::uint64_t>(need);
-    throw CapacityError(what + " needs " + mib(shown) + ", more than the memory budget of " +
+    // exact in 128 bits: count x item_bytes may exceed 64 bits, and the size shown must be the
+    // real one, not a saturated or wrapped value
+    __extension__ typedef unsigned __int128 U128;  // GCC/Clang; __extension__: no -Wpedantic
+    U128 need_mib = (static_cast<U128>(count) * item_bytes + ((1u << 20) - 1)) >> 20;
+    std::string shown;
+    do {
+      shown.insert(shown.begin(), static_cast<char>('0' + static_cast<int>(need_mib % 10)));
+      need_mib /= 10;
+    } while (need_mib != 0);
+    shown += " MiB";
+    throw CapacityError(what + " needs " + shown + ", more than the memory budget of " +
                         mib(limit) + " (--max-memory)");
   }
 }

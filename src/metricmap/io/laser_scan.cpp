@@ -156,7 +156,7 @@ ScanLog readAngleRangeCsv(const std::string& path) {
     if (comma == std::string::npos || !parseDouble(line.substr(0, comma), a) ||
         !parseDouble(line.substr(comma + 1), r)) {
       throw InputError(path + ": line " + std::to_string(n) + ": expected 'angle,range', got '" +
-                       line.substr(0, 40) + "'");
+                       quoteForMessage(line) + "'");
     }
     scan.angles.push_back(a);
     scan.ranges.push_back(r > 0.0 ? r : kNaN);

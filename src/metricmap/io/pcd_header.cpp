@@ -9,6 +9,8 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "metricmap/common/parse_number.h"
 #include "metricmap/exceptions.h"
@@ -19,8 +21,19 @@ namespace {
 
 constexpr std::size_t kMaxHeaderLines = 4096;
 
+/// The message with control bytes of quoted file text as \xHH: a NUL would end what() early.
 [[noreturn]] void fail(const std::string& path, const std::string& what) {
-  throw InputError(path + ": " + what);
+  std::string safe;
+  for (const char ch : what) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c < 0x20 || c == 0x7f) {
+      static const char* hex = "0123456789abcdef";
+      safe += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+    } else {
+      safe += ch;
+    }
+  }
+  throw InputError(path + ": " + safe);
 }
 
 std::vector<std::string> tokens(const std::string& line) {
@@ -36,7 +49,9 @@ std::uint64_t parseCount(const std::string& path, const std::string& key, const 
   char* end = nullptr;
   errno = 0;
   const unsigned long long v = std::strtoull(s.c_str(), &end, 10);
-  if (errno != 0 || *end != '\0' || v > max) fail(path, key + " '" + s + "' is not a valid count");
+  // the whole token: "1\0X" must not read as 1
+  if (errno != 0 || end != s.c_str() + s.size() || v > max)
+    fail(path, key + " '" + s + "' is not a valid count");
   return v;
 }
 
@@ -56,12 +71,22 @@ bool isNumber(const std::string& s) {
 
 void parseHeader(const std::string& path, std::istream& in, PcdHeader& h) {
   bool have_points = false, have_width = false, have_height = false;
+  std::vector<std::pair<std::string, std::size_t>> seen;  // header keys and their lines
   std::string line;
   for (std::size_t n = 0; n < kMaxHeaderLines && std::getline(in, line); ++n) {
     h.data_offset += line.size() + 1;
     const std::vector<std::string> t = tokens(line);
     if (t.empty() || t[0][0] == '#') continue;
     const std::string& key = t[0];
+    // each key once: a second VIEWPOINT (or WIDTH, FIELDS ...) would silently win otherwise
+    const std::string canonical = key == "COLUMNS" ? "FIELDS" : key;
+    for (const auto& [k, first_line] : seen) {
+      if (k == canonical) {
+        fail(path, "a second '" + quoteForMessage(key) + "' line in the header (lines " +
+                       std::to_string(first_line) + " and " + std::to_string(n + 1) + ")");
+      }
+    }
+    seen.emplace_back(canonical, n + 1);
     if (key == "FIELDS" || key == "COLUMNS") {
       h.fields.assign(t.begin() + 1, t.end());
     } else if (key == "SIZE") {

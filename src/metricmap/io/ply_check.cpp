@@ -1,7 +1,10 @@
 #include "metricmap/io/ply_check.h"
 
+#include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "metricmap/common/parse_number.h"
@@ -9,6 +12,52 @@
 #include "metricmap/io/input_file.h"
 
 namespace metricmap {
+namespace {
+
+/// As the PCD ascii check: "nan"/"inf" (any case, signed inf), or a finite decimal number a float
+/// holds. PCL's PLY parser turns any other word, hex included, into a NaN point and succeeds.
+bool isAsciiValue(const std::string& s) {
+  std::string lower;
+  for (char c : s) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower == "nan" || lower == "inf" || lower == "-inf" || lower == "+inf") return true;
+  try {
+    return std::fabs(parseFiniteDouble(s, "value")) <= std::numeric_limits<float>::max();
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
+}
+
+/// The ascii body: the lines of the elements before the vertices are skipped (one line per
+/// instance), then every vertex line must hold `properties` numbers.
+void checkAsciiVertices(std::istream& in, const std::string& path, std::uint64_t skip_lines,
+                        std::uint64_t vertices, std::uint64_t properties,
+                        std::uint64_t header_lines) {
+  std::string line;
+  std::uint64_t line_no = header_lines, done = 0;
+  while (done < vertices && std::getline(in, line)) {
+    ++line_no;
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    if (skip_lines > 0) {
+      --skip_lines;
+      continue;
+    }
+    std::istringstream is(line);
+    std::uint64_t n = 0;
+    for (std::string token; is >> token; ++n) {
+      if (n < properties && !isAsciiValue(token)) {
+        throw InputError(path + ": line " + std::to_string(line_no) + ": '" +
+                         quoteForMessage(token) + "' is not a number");
+      }
+    }
+    if (n != properties) {
+      throw InputError(path + ": line " + std::to_string(line_no) + ": " + std::to_string(n) +
+                       " value(s), the vertex has " + std::to_string(properties) + " properties");
+    }
+    ++done;
+  }
+}
+
+}  // namespace
 
 void checkPlyFile(const std::string& path) {
   requireRegularFile(path);  // a FIFO would block the open
@@ -23,9 +72,11 @@ void checkPlyFile(const std::string& path) {
     throw InputError(path + ": not a PLY file (no 'ply' magic line)");
   }
   std::uint64_t header_bytes = line.size() + 1, vertices = 0, properties = 0;
-  bool in_vertex = false, ended = false;
+  std::uint64_t header_lines = 1, lines_before_vertices = 0;
+  bool in_vertex = false, ended = false, ascii = false, vertex_seen = false;
   for (int n = 0; n < 4096 && std::getline(in, line); ++n) {
     header_bytes += line.size() + 1;
+    ++header_lines;
     std::istringstream is(line);
     std::string key;
     is >> key;
@@ -47,6 +98,8 @@ void checkPlyFile(const std::string& path) {
         throw InputError(path + ": bad PLY element line '" + quoteForMessage(line) + "'");
       in_vertex = name == "vertex";
       if (in_vertex) vertices = static_cast<std::uint64_t>(count);
+      if (!in_vertex && !vertex_seen) lines_before_vertices += static_cast<std::uint64_t>(count);
+      vertex_seen = vertex_seen || in_vertex;
     } else if (key == "property" && in_vertex) {
       std::string type, name;
       is >> type >> name;
@@ -62,6 +115,10 @@ void checkPlyFile(const std::string& path) {
       if (!known || name.empty())
         throw InputError(path + ": bad PLY property line '" + quoteForMessage(line) + "'");
       ++properties;
+    } else if (key == "format") {
+      std::string format;
+      is >> format;
+      ascii = format == "ascii";
     } else if (key == "obj_info") {
       // PCL sizes an organized cloud from obj_info num_cols / num_rows: they must be sane.
       std::string what, value;
@@ -84,6 +141,8 @@ void checkPlyFile(const std::string& path) {
                      " vertices, the body has room for at most " +
                      std::to_string(body / properties));
   }
+  if (ascii && vertices > 0)
+    checkAsciiVertices(in, path, lines_before_vertices, vertices, properties, header_lines);
 }
 
 }  // namespace metricmap

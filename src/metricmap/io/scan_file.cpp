@@ -7,6 +7,7 @@
 
 #include <pcl/PCLPointCloud2.h>
 
+#include "metricmap/common/format_number.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/npy_reader.h"
@@ -139,7 +140,7 @@ void keepTimesRelative(const std::string& path, const std::string& field,
     hi = std::max(hi, t);
   }
   if (hi - lo > kMaxSweepSeconds) {
-    throw InputError(path + ": time field '" + field + "' spans " + std::to_string(hi - lo) +
+    throw InputError(path + ": time field '" + field + "' spans " + formatNumber(hi - lo) +
                      " s, more than one sweep (at most 10 s; integer fields are read as ns)");
   }
   for (double& t : times) t -= lo;

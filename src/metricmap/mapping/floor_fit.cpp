@@ -7,6 +7,8 @@
 #include <pcl/sample_consensus/ransac.h>
 #include <pcl/sample_consensus/sac_model_perpendicular_plane.h>
 
+#include "metricmap/common/format_number.h"
+
 namespace metricmap {
 
 FloorPlane fitFloor(const pcl::PointCloud<pcl::PointXYZ>& camera_cloud, double distance_threshold,
@@ -14,7 +16,7 @@ FloorPlane fitFloor(const pcl::PointCloud<pcl::PointXYZ>& camera_cloud, double d
   if (stride == 0) throw std::invalid_argument("floor fit: stride must be at least 1, got 0");
   if (!std::isfinite(distance_threshold) || !(distance_threshold > 0.0)) {
     throw std::invalid_argument("floor fit: distance threshold must be a finite number > 0, got " +
-                                std::to_string(distance_threshold));
+                                formatNumber(distance_threshold));
   }
   auto sample = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   std::size_t k = 0;

@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "metricmap/common/format_number.h"
 #include "metricmap/detail/fast_floor.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/array_writers.h"
@@ -49,9 +50,9 @@ void OccupancyMap2D::add(const pcl::PointCloud<pcl::PointXYZ>& world_points) {
     if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) continue;
     const double u = v[a] * inv, w = v[b] * inv;
     if (std::fabs(u) > kLimit || std::fabs(w) > kLimit) {
-      throw CapacityError("map resolution " + std::to_string(resolution_) +
-                          " m too fine for a point at " + std::to_string(v[a]) + ", " +
-                          std::to_string(v[b]) + " (cell index beyond 2e9)");
+      throw CapacityError("map resolution " + formatNumber(resolution_) +
+                          " m too fine for a point at " + formatNumber(v[a]) + ", " +
+                          formatNumber(v[b]) + " (cell index beyond 2e9)");
     }
     ++hits_[pack(floorToInt(u), floorToInt(w))];
   }
@@ -81,7 +82,7 @@ MapImage OccupancyMap2D::image(std::uint64_t max_pixels) const {
   const std::uint64_t h = static_cast<std::uint64_t>(j1 - j0 + 1);
   if (static_cast<double>(w) * static_cast<double>(h) > static_cast<double>(max_pixels)) {
     throw CapacityError("map image of " + std::to_string(w) + " x " + std::to_string(h) +
-                        " cells at " + std::to_string(resolution_) + " m exceeds " +
+                        " cells at " + formatNumber(resolution_) + " m exceeds " +
                         std::to_string(max_pixels) + " pixels; use a coarser map resolution");
   }
   m.width = static_cast<int>(w);

@@ -14,8 +14,7 @@ namespace {
 
 constexpr int kMaxDepth = 16;  // OctoMap's tree depth: leaves at depth 16
 constexpr long long kMaxNodes = 1LL << 50;
-// a voxel edge: 0.1 mm (below that the 16-level key space is under 7 m wide) to 1 km
-constexpr double kMinResolution = 1e-4, kMaxResolution = 1e3;
+constexpr double kMinResolution = kOctomapMinResolution, kMaxResolution = kOctomapMaxResolution;
 
 [[noreturn]] void fail(const std::string& name, const std::string& what) {
   throw InputError(name + ": " + what);

@@ -14,6 +14,7 @@
 
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/exceptions.h"
+#include "metricmap/io/checked_file.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/input_file.h"
 #include "metricmap/occupancy/octomap_file_check.h"
@@ -69,11 +70,12 @@ std::unique_ptr<octomap::OcTree> toOcTree(const LogOddsMap& map) {
 void writeOctomap(const LogOddsMap& map, const std::string& path) {
   const bool binary = endsWith(path, ".bt");
   if (!binary && !endsWith(path, ".ot"))
-    throw std::invalid_argument(path + ": OctoMap files end in .bt or .ot");
+    throw std::invalid_argument(outputDisplayName(path) + ": OctoMap files end in .bt or .ot");
   std::unique_ptr<octomap::OcTree> tree = toOcTree(map);
   std::ostringstream out(std::ios::binary);
   const bool ok = binary ? tree->writeBinary(out) : tree->write(out);
-  if (!ok || !out) throw std::runtime_error(path + ": liboctomap could not serialise the map");
+  if (!ok || !out)
+    throw std::runtime_error(outputDisplayName(path) + ": liboctomap could not serialise the map");
   writeTextAtomic(path, out.str());
 }
 

@@ -21,10 +21,19 @@ double secondsSince(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
+/// `name`: the scan's file, named in any error about the scan (a point outside the key space, a
+/// scan too large for the budget).
 void insertInto(LogOddsMap& map, const Cloud& cloud, const Eigen::Vector3f* origin,
-                std::size_t dropped, ScanCastTotals& totals) {
+                std::size_t dropped, ScanCastTotals& totals, const std::string& name) {
   const auto t = std::chrono::steady_clock::now();
-  const ScanInsertReport r = origin ? map.insertScan(cloud, *origin) : map.insertScan(cloud);
+  ScanInsertReport r;
+  try {
+    r = origin ? map.insertScan(cloud, *origin) : map.insertScan(cloud);
+  } catch (const CapacityError& e) {
+    throw CapacityError(name + ": " + e.what());
+  } catch (const InputError& e) {
+    throw InputError(name + ": " + e.what());
+  }
   totals.insert_s += secondsSince(t);
   ++totals.frames;
   totals.points += r.points + dropped;
@@ -59,7 +68,7 @@ void castKittiFrames(LogOddsMap& map, const KittiSequence& sequence,
     pcl::transformPointCloud(scan, world_scan, to_world.matrix().cast<float>());
     totals.load_s += secondsSince(t);
     const Eigen::Vector3f origin = to_world.translation().cast<float>();
-    insertInto(map, world_scan, &origin, lr.nonfinite_dropped, totals);
+    insertInto(map, world_scan, &origin, lr.nonfinite_dropped, totals, sequence.scan(frames[k]));
     if (progress) progress(k + 1 - first, last - first);
   }
 }
@@ -78,7 +87,7 @@ void castPcdScans(LogOddsMap& map, const std::vector<std::string>& paths, std::s
     Cloud scan;
     const LoadReport lr = loadCloud(paths[k], scan);
     totals.load_s += secondsSince(t);
-    insertInto(map, scan, nullptr, lr.nonfinite_dropped, totals);
+    insertInto(map, scan, nullptr, lr.nonfinite_dropped, totals, paths[k]);
     if (progress) progress(k + 1 - first, last - first);
   }
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "metricmap/common/format_number.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/registration/deskew.h"
 #include "metricmap/registration/point_to_point_icp.h"
@@ -15,7 +16,7 @@ const LidarOdometryConfig& validated(const LidarOdometryConfig& c) {
   auto positive = [](double v, const char* name) {
     if (!(std::isfinite(v) && v > 0.0)) {
       throw std::invalid_argument(std::string(name) + " must be a finite number > 0, got " +
-                                  std::to_string(v));
+                                  formatNumber(v));
     }
   };
   positive(c.max_range, "max_range");
@@ -24,7 +25,7 @@ const LidarOdometryConfig& validated(const LidarOdometryConfig& c) {
   positive(c.convergence, "convergence");
   if (!(std::isfinite(c.min_range) && c.min_range >= 0.0 && c.min_range < c.max_range)) {
     throw std::invalid_argument("min_range must be >= 0 and below max_range, got " +
-                                std::to_string(c.min_range));
+                                formatNumber(c.min_range));
   }
   for (auto [v, name] :
        {std::pair{c.min_threshold, "min_threshold"}, std::pair{c.min_deviation, "min_deviation"},
@@ -34,7 +35,7 @@ const LidarOdometryConfig& validated(const LidarOdometryConfig& c) {
         std::pair{c.coarse_voxel_size, "coarse_voxel_size"}}) {
     if (!(std::isfinite(v) && v >= 0.0)) {
       throw std::invalid_argument(std::string(name) + " must be a finite number >= 0, got " +
-                                  std::to_string(v));
+                                  formatNumber(v));
     }
   }
   if (c.min_points < 1) {
@@ -119,13 +120,13 @@ OdometryResult LidarOdometry::registerScan(const Scan& points, const std::vector
     throw InputError(label + ": no finite point among " + std::to_string(points.size()));
   }
   if (counts.in_range == 0) {
-    throw InputError(label + ": no point between min_range " + std::to_string(config_.min_range) +
-                     " and max_range " + std::to_string(config_.max_range) + " m");
+    throw InputError(label + ": no point between min_range " + formatNumber(config_.min_range) +
+                     " and max_range " + formatNumber(config_.max_range) + " m");
   }
   if (counts.in_range < static_cast<std::size_t>(config_.min_points)) {
     throw InputError(label + ": " + std::to_string(counts.in_range) +
-                     " point(s) between min_range " + std::to_string(config_.min_range) +
-                     " and max_range " + std::to_string(config_.max_range) + " m, at least " +
+                     " point(s) between min_range " + formatNumber(config_.min_range) +
+                     " and max_range " + formatNumber(config_.max_range) + " m, at least " +
                      std::to_string(config_.min_points) + " needed to register a frame");
   }
   res.points_used = counts.in_range;
