@@ -1,9 +1,9 @@
 #include "metricmap/io/npy_reader.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <regex>
 
 #include "metricmap/exceptions.h"
 #include "metricmap/io/input_file.h"
@@ -15,8 +15,17 @@ constexpr std::uint64_t kMaxNpyBytes = std::uint64_t{1} << 34;  // 16 GiB: large
 
 std::size_t parseDimension(const std::string& path, const std::string& text) {
   if (text.empty() || text.size() > 18 || text.find_first_not_of("0123456789") != std::string::npos)
-    throw InputError(path + ": bad shape entry '" + text + "' in the .npy header");
+    throw InputError(path + ": bad shape entry '" + text.substr(0, 20) + "' in the .npy header");
   return static_cast<std::size_t>(std::stoull(text));
+}
+
+// The text after `'key'` and a colon (spaces skipped), or npos.
+std::size_t valueAt(const std::string& header, const std::string& key) {
+  const std::size_t k = header.find("'" + key + "'");
+  if (k == std::string::npos) return std::string::npos;
+  std::size_t i = header.find_first_not_of(" \t", k + key.size() + 2);
+  if (i == std::string::npos || header[i] != ':') return std::string::npos;
+  return header.find_first_not_of(" \t", i + 1);
 }
 
 }  // namespace
@@ -45,30 +54,43 @@ NpyArray readNpyPoints(const std::string& path) {
   const std::string header = bytes.substr(header_at, header_len);
   const std::size_t data_at = header_at + header_len;
 
-  std::smatch m;
-  static const std::regex descr_re("'descr'\\s*:\\s*'([^']*)'");
-  static const std::regex fortran_re("'fortran_order'\\s*:\\s*(True|False)");
-  static const std::regex shape_re("'shape'\\s*:\\s*\\(\\s*([0-9]*)\\s*,\\s*([0-9]*)\\s*,?\\s*\\)");
-  if (!std::regex_search(header, m, descr_re))
-    throw InputError(path + ": .npy header has no descr");
-  const std::string descr = m[1];
+  // The header is a Python dict literal; only its three keys are read, without a regex (a
+  // hostile header may be 4 GiB long).
+  std::size_t at = valueAt(header, "descr");
+  std::size_t end =
+      at == std::string::npos || header[at] != '\'' ? std::string::npos : header.find('\'', at + 1);
+  if (end == std::string::npos) throw InputError(path + ": .npy header has no descr");
+  const std::string descr = header.substr(at + 1, end - at - 1);
   std::size_t item = 0;
   if (descr == "<f4") {
     item = 4;
   } else if (descr == "<f8") {
     item = 8;
   } else {
-    throw InputError(path + ": .npy dtype '" + descr +
+    throw InputError(path + ": .npy dtype '" + descr.substr(0, 16) +
                      "' is not a little-endian float32/float64 ('<f4', '<f8')");
   }
-  if (!std::regex_search(header, m, fortran_re))
+  at = valueAt(header, "fortran_order");
+  if (at == std::string::npos) throw InputError(path + ": .npy header has no fortran_order");
+  if (header.compare(at, 4, "True") == 0)
+    throw InputError(path + ": Fortran-ordered .npy arrays are not read");
+  if (header.compare(at, 5, "False") != 0)
     throw InputError(path + ": .npy header has no fortran_order");
-  if (m[1] == "True") throw InputError(path + ": Fortran-ordered .npy arrays are not read");
-  if (!std::regex_search(header, m, shape_re))
+  at = valueAt(header, "shape");
+  if (at == std::string::npos || header[at] != '(')
+    throw InputError(path + ": .npy shape is not (N, C): a 2-D point array is expected");
+  end = header.find(')', at);
+  if (end == std::string::npos)
+    throw InputError(path + ": .npy shape is not (N, C): a 2-D point array is expected");
+  std::string dims = header.substr(at + 1, end - at - 1);
+  dims.erase(std::remove_if(dims.begin(), dims.end(), [](char c) { return c == ' '; }), dims.end());
+  if (!dims.empty() && dims.back() == ',') dims.pop_back();
+  const std::size_t comma = dims.find(',');
+  if (comma == std::string::npos || dims.find(',', comma + 1) != std::string::npos)
     throw InputError(path + ": .npy shape is not (N, C): a 2-D point array is expected");
   NpyArray a;
-  a.rows = parseDimension(path, m[1]);
-  a.cols = parseDimension(path, m[2]);
+  a.rows = parseDimension(path, dims.substr(0, comma));
+  a.cols = parseDimension(path, dims.substr(comma + 1));
   if (a.cols < 3 || a.cols > 64)
     throw InputError(path + ": .npy shape (" + std::to_string(a.rows) + ", " +
                      std::to_string(a.cols) + ") has not 3 to 64 columns (x y z ...)");
