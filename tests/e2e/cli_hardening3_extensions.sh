@@ -54,11 +54,7 @@ cases=(
   "2|--out|compare $bun --format json --out $o/s.csv"
   "2|--out|compare $bun --format markdown --out $o/s.png"
 )
-for row in "${cases[@]}"; do
-  IFS='|' read -r code needle cmd <<<"$row"
-  # shellcheck disable=SC2086
-  expect "$code" "$needle" -- "$MM" $cmd
-done
+expect_cases "${cases[@]}"
 check "nothing written by a refused name" test -z "$(ls -A "$o")"
 
 # The extensions each option names are accepted, and what they write reads back.

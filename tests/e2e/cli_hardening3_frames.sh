@@ -27,11 +27,7 @@ cases=(
   "2|--frames|$occ --frames 0-1,0-1"
   "2|--frames|$occ --frames 2,0-1"
 )
-for row in "${cases[@]}"; do
-  IFS='|' read -r code needle cmd <<<"$row"
-  # shellcheck disable=SC2086
-  expect "$code" "$needle" -- "$MM" $cmd
-done
+expect_cases "${cases[@]}"
 check "nothing written by a refused selection" test -z "$(ls -A "$o")"
 
 # Ascending lists, ranges and gaps are accepted.

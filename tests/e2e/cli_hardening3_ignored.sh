@@ -41,11 +41,7 @@ cases=(
   "2|--angle-min-deg|lines $mines --preset urg04lx-mines --angle-min-deg 0"
   "2|--angle-increment-deg|lines $mines --preset urg04lx-mines --angle-increment-deg 1"
 )
-for row in "${cases[@]}"; do
-  IFS='|' read -r code needle cmd <<<"$row"
-  # shellcheck disable=SC2086
-  expect "$code" "$needle" -- "$MM" $cmd
-done
+expect_cases "${cases[@]}"
 check "nothing written by a refused option" test -z "$(ls -A "$o")"
 
 # What applies is still accepted.

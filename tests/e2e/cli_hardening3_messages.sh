@@ -39,11 +39,7 @@ cases=(
   "1|far.pcd: |occupancy $tmp/far.pcd --resolution 0.0001 --max-range 1e13 --out $o/a.bt"
   "1|velodyne/000000.bin: |occupancy $k --frames 0 --resolution 0.0001 --max-range 20 --out $o/a.bt"
 )
-for row in "${cases[@]}"; do
-  IFS='|' read -r code needle cmd <<<"$row"
-  # shellcheck disable=SC2086
-  expect "$code" "$needle" -- "$MM" $cmd
-done
+expect_cases "${cases[@]}"
 check "nothing written" test -z "$(ls -A "$o")"
 check "no message holds a 20-digit run" bash -c \
   "'$MM' depth-to-cloud '$tum/TUM_depth.png' --camera '$tum/camera_primesense.json' --depth-scale 1e308 --out '$o/d.pcd' 2>&1 | grep -vqE '[0-9]{20}'"

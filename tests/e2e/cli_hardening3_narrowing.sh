@@ -55,11 +55,7 @@ cases=(
   "2|--max-memory|--max-memory $big info $bun"
   "2|max_points|compare $bun --config cell_size=1,min_cell_size=1,max_points=$u32"
 )
-for row in "${cases[@]}"; do
-  IFS='|' read -r code needle cmd <<<"$row"
-  # shellcheck disable=SC2086
-  expect "$code" "$needle" -- "$MM" $cmd
-done
+expect_cases "${cases[@]}"
 check "nothing written by a refused option" test -z "$(ls -A "$o")"
 
 # The largest value of each target type is accepted and kept.

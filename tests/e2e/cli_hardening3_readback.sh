@@ -35,11 +35,7 @@ cases=(
   "2|--max-height|$kit --max-height inf --out-map $o/m.pgm"
   "2|--max-height|$kit --max-height 1e999 --out-map $o/m.pgm"
 )
-for row in "${cases[@]}"; do
-  IFS='|' read -r code needle cmd <<<"$row"
-  # shellcheck disable=SC2086
-  expect "$code" "$needle" -- "$MM" $cmd
-done
+expect_cases "${cases[@]}"
 check "nothing written by a refused option" test -z "$(ls -A "$o")"
 
 # The largest voxel edge writes maps that metricmap reads back.

@@ -21,6 +21,16 @@ expect() {
   fi
 }
 
+# expect_cases "CODE|NEEDLE|ARGS" ...: `expect` for each row, running "$MM" ARGS (split on spaces).
+expect_cases() {
+  local row code needle cmd
+  for row in "$@"; do
+    IFS='|' read -r code needle cmd <<<"$row"
+    # shellcheck disable=SC2086
+    expect "$code" "$needle" -- "$MM" $cmd
+  done
+}
+
 check() {  # check DESCRIPTION command...: the command must succeed
   local what=$1
   shift

@@ -17,6 +17,18 @@
 #include "metricmap/io/input_file.h"
 
 namespace metricmap {
+
+bool isAsciiValue(const std::string& s) {
+  std::string lower;
+  for (char c : s) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower == "nan" || lower == "inf" || lower == "-inf" || lower == "+inf") return true;
+  try {
+    return std::fabs(parseFiniteDouble(s, "value")) <= std::numeric_limits<float>::max();
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
+}
+
 namespace {
 
 constexpr std::size_t kMaxHeaderLines = 4096;
@@ -53,20 +65,6 @@ std::uint64_t parseCount(const std::string& path, const std::string& key, const 
   if (errno != 0 || end != s.c_str() + s.size() || v > max)
     fail(path, key + " '" + s + "' is not a valid count");
   return v;
-}
-
-/// A value PCL's ascii decoder reads as we do: "nan"/"inf" (any case, signed inf), or a finite
-/// decimal number within float range (PCL falls back to atof and casts: hex would read as 0 and
-/// 1e39 as an out-of-range float cast).
-bool isNumber(const std::string& s) {
-  std::string lower;
-  for (char c : s) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (lower == "nan" || lower == "inf" || lower == "-inf" || lower == "+inf") return true;
-  try {
-    return std::fabs(parseFiniteDouble(s, "value")) <= std::numeric_limits<float>::max();
-  } catch (const std::invalid_argument&) {
-    return false;
-  }
 }
 
 void parseHeader(const std::string& path, std::istream& in, PcdHeader& h) {
@@ -173,7 +171,7 @@ void checkAscii(const std::string& path, std::istream& in, PcdHeader& h, std::ui
       continue;
     }
     for (const std::string& v : t) {
-      if (!isNumber(v)) {
+      if (!isAsciiValue(v)) {
         fail(path, "body line " + std::to_string(line_no) + ": '" + v.substr(0, 32) +
                        "' is not a number");
       }

@@ -34,6 +34,11 @@ struct PcdHeader {
 /// last real point instead, so the reader feeds it the kept lines).
 /// \param[out] skipped_lines ascii lines with the wrong number of values (skipped by PCL)
 /// \throws InputError with a one-line message naming the file
+/// \brief A token PCL's ascii decoders (PCD and PLY) read as we do: "nan"/"inf" (any case,
+/// signed inf), or a finite decimal number within float range (PCL falls back to atof and casts:
+/// hex would read as 0, 1e39 as an out-of-range float cast).
+bool isAsciiValue(const std::string& s);
+
 PcdHeader checkPcdFile(const std::string& path, std::uint64_t& skipped_lines);
 
 }  // namespace metricmap

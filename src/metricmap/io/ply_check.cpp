@@ -10,22 +10,10 @@
 #include "metricmap/common/parse_number.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/input_file.h"
+#include "metricmap/io/pcd_header.h"
 
 namespace metricmap {
 namespace {
-
-/// As the PCD ascii check: "nan"/"inf" (any case, signed inf), or a finite decimal number a float
-/// holds. PCL's PLY parser turns any other word, hex included, into a NaN point and succeeds.
-bool isAsciiValue(const std::string& s) {
-  std::string lower;
-  for (char c : s) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (lower == "nan" || lower == "inf" || lower == "-inf" || lower == "+inf") return true;
-  try {
-    return std::fabs(parseFiniteDouble(s, "value")) <= std::numeric_limits<float>::max();
-  } catch (const std::invalid_argument&) {
-    return false;
-  }
-}
 
 /// The ascii body: the lines of the elements before the vertices are skipped (one line per
 /// instance), then every vertex line must hold `properties` numbers.
