@@ -87,6 +87,18 @@ void addRangeOptions(CLI::App& app, RangeOptions& o, std::string& profile) {
 }
 
 void checkRangeOptions(const RangeOptions& o) {
+  // A range beyond 10 km or a voxel outside 1 mm .. 100 m is no sensor's: the map's 21-bit cells
+  // would overflow or a single cell would hold the whole scan.
+  if (o.max_range && *o.max_range > 1e4) {
+    throw CLI::ValidationError("--max-range", "at most 10000 m, got " + formatNumber(*o.max_range));
+  }
+  if (o.min_range && *o.min_range > 1e4) {
+    throw CLI::ValidationError("--min-range", "at most 10000 m, got " + formatNumber(*o.min_range));
+  }
+  if (o.voxel_size && !(*o.voxel_size >= 1e-3 && *o.voxel_size <= 100.0)) {
+    throw CLI::ValidationError("--voxel-size",
+                               "between 0.001 and 100 m, got " + formatNumber(*o.voxel_size));
+  }
   if (o.min_range && o.max_range && !(*o.min_range < *o.max_range)) {
     throw CLI::ValidationError("--min-range", "must be below --max-range");
   }
