@@ -68,7 +68,7 @@ void run(const MapOptions& o) {
     for (std::string* path : {&files.pgm, &files.yaml, &files.preview_png, &files.heat_png}) {
       *path = outputs.stage(*path);
     }
-    writeMapServer(image, c.min_hits, files);
+    writeMapServer(mapServerImage(image, c.min_hits), files, heatImage(image));
   }
   if (!o.out_cloud.empty()) {
     savePcdAtomic(outputs.stage(o.out_cloud), maps.globalCloud(), parsePcdFormat(o.pcd_format));

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -43,14 +44,15 @@ TEST(FileIdentity, OneFileHoweverSpelled) {
   fs::create_directory_symlink(d.path, d / "dirlink");
   const FileIdentity a = fileIdentity(d / "a.pcd");
   EXPECT_TRUE(a.exists);
-  for (const fs::path& p :
-       {d / "./a.pcd", d / "sub/../a.pcd", d / "link.pcd", d / "hard.pcd", d / "dirlink/a.pcd"}) {
+  for (const fs::path& p : std::vector<fs::path>{d / "./a.pcd", d / "sub/../a.pcd", d / "link.pcd",
+                                                 d / "hard.pcd", d / "dirlink/a.pcd"}) {
     EXPECT_TRUE(sameFile(a, fileIdentity(p))) << p;
   }
   // new files: normalised absolute paths, symlinked directories resolved
   const FileIdentity n = fileIdentity(d / "new.pcd");
   EXPECT_FALSE(n.exists);
-  for (const fs::path& p : {d / "./new.pcd", d / "sub/../new.pcd", d / "dirlink/new.pcd"}) {
+  for (const fs::path& p :
+       std::vector<fs::path>{d / "./new.pcd", d / "sub/../new.pcd", d / "dirlink/new.pcd"}) {
     EXPECT_TRUE(sameFile(n, fileIdentity(p))) << p;
   }
   EXPECT_FALSE(sameFile(n, fileIdentity(d / "sub/new.pcd")));

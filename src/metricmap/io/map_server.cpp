@@ -17,16 +17,21 @@ MapServerFiles mapServerFiles(const std::string& pgm_path) {
   return {pgm_path, stem + ".yaml", stem + "_preview.png", stem + "_heat.png", name};
 }
 
-void writeMapServer(const MapServerImage& image, const MapServerFiles& files) {
+void writeMapServer(const MapServerImage& image, const MapServerFiles& files,
+                    const std::vector<std::uint8_t>& heat_rgb) {
   if (image.width <= 0 || image.height <= 0)
     throw std::invalid_argument("the map is empty: no cell to write to " + files.pgm);
   if (image.pixels.size() !=
       static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height))
     throw std::invalid_argument("map image pixel count does not match its size");
+  if (!heat_rgb.empty() && heat_rgb.size() != 3 * image.pixels.size())
+    throw std::invalid_argument("map heat image size does not match the map's");
   YAML::Emitter yaml;
   yaml.SetDoublePrecision(10);
   yaml << YAML::BeginMap << YAML::Key << "image" << YAML::Value << files.image_name;
-  if (image.trinary) yaml << YAML::Key << "mode" << YAML::Value << "trinary";
+  if (image.mode != MapServerMode::Unstated)
+    yaml << YAML::Key << "mode" << YAML::Value
+         << (image.mode == MapServerMode::Trinary ? "trinary" : "scale");
   yaml << YAML::Key << "resolution" << YAML::Value << image.resolution << YAML::Key << "origin"
        << YAML::Value << YAML::Flow << YAML::BeginSeq << image.origin_x << image.origin_y << 0.0
        << YAML::EndSeq << YAML::Key << "negate" << YAML::Value << 0 << YAML::Key
@@ -36,6 +41,8 @@ void writeMapServer(const MapServerImage& image, const MapServerFiles& files) {
   writeTextAtomic(files.yaml, std::string(yaml.c_str()) + "\n");
   if (!files.preview_png.empty())
     writePng(files.preview_png, image.width, image.height, 1, image.pixels);
+  if (!files.heat_png.empty() && !heat_rgb.empty())
+    writePng(files.heat_png, image.width, image.height, 3, heat_rgb);
 }
 
 }  // namespace metricmap

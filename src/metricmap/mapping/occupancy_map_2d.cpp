@@ -8,7 +8,6 @@
 #include "metricmap/common/format_number.h"
 #include "metricmap/detail/fast_floor.h"
 #include "metricmap/exceptions.h"
-#include "metricmap/io/array_writers.h"
 
 namespace metricmap {
 namespace {
@@ -98,34 +97,28 @@ MapImage OccupancyMap2D::image(std::uint64_t max_pixels) const {
   return m;
 }
 
-std::size_t writeMapServer(const MapImage& map, std::uint32_t min_hits,
-                           const MapServerFiles& files) {
+MapServerImage mapServerImage(const MapImage& map, std::uint32_t min_hits) {
   if (map.width == 0) throw std::invalid_argument("the map is empty: no point was projected");
-  std::vector<std::uint8_t> grey(map.hits.size());
-  std::size_t occupied = 0;
-  std::uint32_t most = 1;
+  MapServerImage out{map.width, map.height, map.resolution, map.origin_x, map.origin_y, {}, {}};
+  out.pixels.resize(map.hits.size());
+  for (std::size_t i = 0; i < map.hits.size(); ++i)
+    out.pixels[i] = map.hits[i] >= min_hits && map.hits[i] > 0 ? kMapOccupied : kMapFree;
+  return out;
+}
+
+std::vector<std::uint8_t> heatImage(const MapImage& map) {
+  const std::uint32_t most = std::max<std::uint32_t>(
+      1, map.hits.empty() ? 1 : *std::max_element(map.hits.begin(), map.hits.end()));
+  std::vector<std::uint8_t> heat(map.hits.size() * 3, 0);
+  const double scale = std::log1p(static_cast<double>(most));
   for (std::size_t i = 0; i < map.hits.size(); ++i) {
-    const bool occ = map.hits[i] >= min_hits && map.hits[i] > 0;
-    grey[i] = occ ? 0 : 254;
-    occupied += occ ? 1 : 0;
-    most = std::max(most, map.hits[i]);
+    if (map.hits[i] == 0) continue;
+    const double t = std::log1p(static_cast<double>(map.hits[i])) / scale;  // 0..1
+    heat[3 * i] = static_cast<std::uint8_t>(255 * std::min(1.0, 1.5 * t));
+    heat[3 * i + 1] = static_cast<std::uint8_t>(255 * std::max(0.0, 1.5 * t - 0.5));
+    heat[3 * i + 2] = static_cast<std::uint8_t>(255 * std::max(0.0, 0.6 - t));
   }
-  MapServerImage out{map.width, map.height, map.resolution, map.origin_x, map.origin_y, {}, false};
-  out.pixels = std::move(grey);
-  writeMapServer(out, files);
-  if (!files.heat_png.empty()) {
-    std::vector<std::uint8_t> heat(map.hits.size() * 3, 0);
-    const double scale = std::log1p(static_cast<double>(most));
-    for (std::size_t i = 0; i < map.hits.size(); ++i) {
-      if (map.hits[i] == 0) continue;
-      const double t = std::log1p(static_cast<double>(map.hits[i])) / scale;  // 0..1
-      heat[3 * i] = static_cast<std::uint8_t>(255 * std::min(1.0, 1.5 * t));
-      heat[3 * i + 1] = static_cast<std::uint8_t>(255 * std::max(0.0, 1.5 * t - 0.5));
-      heat[3 * i + 2] = static_cast<std::uint8_t>(255 * std::max(0.0, 0.6 - t));
-    }
-    writePng(files.heat_png, map.width, map.height, 3, heat);
-  }
-  return occupied;
+  return heat;
 }
 
 }  // namespace metricmap

@@ -10,7 +10,7 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
-#include "metricmap/io/map_server.h"
+#include "metricmap/common/map_server_image.h"
 
 namespace metricmap {
 
@@ -58,13 +58,12 @@ class OccupancyMap2D {
   std::unordered_map<std::uint64_t, std::uint32_t> hits_;
 };
 
-/// \brief Write a map_server pair: PGM (occupied = hits >= min_hits, 0 black; else 254) and
-/// YAML (image, resolution, origin [x, y, 0] of the lower-left pixel, negate 0,
-/// occupied_thresh 0.65, free_thresh 0.196), plus the PNG preview and heat map when their paths
-/// are not empty. Each file is written through a temporary name and renamed (io/map_server.h).
+/// \brief The map as map_server reads it (io/map_server.h writes it): occupied (0, black) where
+/// hits >= min_hits (and >= 1), free (254) elsewhere; the YAML's mode unstated (trinary).
 /// \throws std::invalid_argument for an empty map
-/// \return the number of occupied cells
-std::size_t writeMapServer(const MapImage& map, std::uint32_t min_hits,
-                           const MapServerFiles& files);
+MapServerImage mapServerImage(const MapImage& map, std::uint32_t min_hits);
+
+/// \brief A heat map of the hits (RGB, row-major, log scale; black where no hit).
+std::vector<std::uint8_t> heatImage(const MapImage& map);
 
 }  // namespace metricmap

@@ -60,6 +60,13 @@ void validateScanMapperConfig(const ScanMapperConfig& c) {
               str(r.refine.max_correspondence));
   require(r.refine.max_iterations > 0, "registration needs at least one iteration");
   require(r.min_points >= 1, "registration needs a minimum of at least one point");
+  if (c.occupancy_2d) {
+    const Occupancy2DConfig& o = *c.occupancy_2d;
+    require(!std::isnan(o.band_min) && !std::isnan(o.band_max) && o.band_min <= o.band_max,
+            "2D occupancy band must be MIN,MAX with MIN <= MAX, got " + str(o.band_min) + "," +
+                str(o.band_max));
+    validateLogOddsParams(o.params);
+  }
 }
 
 pcl::PointCloud<pcl::PointXYZ> rangeBand(const pcl::PointCloud<pcl::PointXYZ>& scan,
@@ -94,6 +101,7 @@ ScanMapper::ScanMapper(const ScanMapperConfig& config)
       target_(std::make_shared<Cloud>()) {
   if (config.odometry) odometry_ = std::make_unique<LidarOdometry>(config.odometry_config);
   if (config.occupancy) log_odds_ = std::make_unique<LogOddsMap>(*config.occupancy);
+  if (config.occupancy_2d) grid_2d_ = std::make_unique<LogOddsGrid2D>(config.occupancy_2d->params);
 }
 
 FrameReport ScanMapper::addScan(const Cloud& scan_in_sensor) {
@@ -140,6 +148,13 @@ FrameReport ScanMapper::addScan(const Cloud& scan_in_sensor, const Eigen::Isomet
   if (reg.enabled) updateTarget(kept, report.pose_used);
   Cloud world;
   pcl::transformPointCloud(kept, world, report.pose_used.matrix().cast<float>());
+  report.seconds_transform += secondsSince(t);
+  if (grid_2d_) {
+    t = std::chrono::steady_clock::now();
+    report.beams_2d = castInPlane(world, report.pose_used.translation());
+    report.seconds_occupancy_2d = secondsSince(t);
+  }
+  t = std::chrono::steady_clock::now();
   if (config_.voxel > 0.0) world = voxelAverage(world, config_.voxel);
   report.points_kept = world.size();
   report.seconds_transform += secondsSince(t);
@@ -170,6 +185,24 @@ FrameReport ScanMapper::addScan(const Cloud& scan_in_sensor, const Eigen::Isomet
   given_.push_back(pose);
   used_.push_back(report.pose_used);
   return report;
+}
+
+std::uint64_t ScanMapper::castInPlane(const Cloud& world, const Eigen::Vector3d& sensor) {
+  const Occupancy2DConfig& c = *config_.occupancy_2d;
+  const int a = config_.plane == MapPlane::YZ ? 1 : 0;
+  const int b = config_.plane == MapPlane::XY ? 1 : 2;
+  const Eigen::Vector3f up = config_.up.normalized();
+  const Eigen::Vector3f s = sensor.cast<float>();
+  const float base = up.dot(s);
+  std::vector<Eigen::Vector2f> ends;
+  ends.reserve(world.size());
+  for (const auto& p : world) {
+    const Eigen::Vector3f v = p.getVector3fMap();
+    const double h = static_cast<double>(up.dot(v) - base);
+    if (h >= c.band_min && h <= c.band_max) ends.emplace_back(v[a], v[b]);
+  }
+  grid_2d_->insertScan(Eigen::Vector2f(s[a], s[b]), ends);
+  return ends.size();
 }
 
 void ScanMapper::updateTarget(const Cloud& kept_in_sensor, const Eigen::Isometry3d& pose) {

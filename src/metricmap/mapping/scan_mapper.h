@@ -13,6 +13,7 @@
 #include <pcl/point_types.h>
 #include <Eigen/Geometry>
 
+#include "metricmap/mapping/log_odds_grid_2d.h"
 #include "metricmap/mapping/occupancy_map_2d.h"
 #include "metricmap/occupancy/log_odds_map.h"
 #include "metricmap/registration/lidar_odometry.h"
@@ -41,6 +42,15 @@ struct RegistrationConfig {
   std::size_t min_points = 20;   ///< fewer registration points in source or target: an error
 };
 
+/// \brief The 2D log-odds occupancy grid of a ScanMapper: the kept points whose height above
+/// the sensor (along the world's `up`) lies in [band_min, band_max], projected onto the map
+/// plane and cast from the sensor's projected position (LogOddsGrid2D). 2D laser scans lie at
+/// height 0 and are all cast.
+struct Occupancy2DConfig {
+  LogOddsParams params;  ///< resolution, sensor model, max_range (OctoMap's defaults)
+  double band_min = -0.5, band_max = 0.5;
+};
+
 /// \brief Parameters of ScanMapper. Ranges are in the sensor frame, heights in the world.
 struct ScanMapperConfig {
   double min_range = 0.0;                                      ///< drop closer returns (m)
@@ -63,6 +73,8 @@ struct ScanMapperConfig {
   /// as given (no range band), cast from the sensor's position with the pose used. Off when
   /// empty.
   std::optional<LogOddsParams> occupancy;
+  /// 2D log-odds occupancy grid in the map plane. Off when empty.
+  std::optional<Occupancy2DConfig> occupancy_2d;
 };
 
 /// \brief \throws std::invalid_argument naming the first bad parameter
@@ -80,7 +92,9 @@ struct FrameReport {
   bool converged = false;  ///< PCL's hasConverged of the last stage
   double fitness = 0.0;    ///< PCL's fitness score of the last stage
   double seconds_register = 0.0, seconds_transform = 0.0, seconds_map = 0.0;
-  double seconds_occupancy = 0.0;  ///< ray casting into the log-odds map (when on)
+  double seconds_occupancy = 0.0;     ///< ray casting into the log-odds map (when on)
+  double seconds_occupancy_2d = 0.0;  ///< beams cast into the 2D grid (when on)
+  std::uint64_t beams_2d = 0;         ///< beams cast into the 2D grid
 };
 
 /// \brief Per-frame and RMS translation error of a trajectory against a reference.
@@ -118,6 +132,8 @@ class ScanMapper {
 
   /// \brief The log-odds map so far; null unless `occupancy` is configured.
   const LogOddsMap* occupancy() const { return log_odds_.get(); }
+  /// \brief The 2D log-odds grid so far; null unless `occupancy_2d` is configured.
+  const LogOddsGrid2D* occupancy2D() const { return grid_2d_.get(); }
 
   /// \brief The 2D hit map so far.
   const OccupancyMap2D& map() const { return map_; }
@@ -138,6 +154,7 @@ class ScanMapper {
 
  private:
   void updateTarget(const Cloud& kept_in_sensor, const Eigen::Isometry3d& pose);
+  std::uint64_t castInPlane(const Cloud& world, const Eigen::Vector3d& sensor);
 
   ScanMapperConfig config_;
   OccupancyMap2D map_;
@@ -147,6 +164,7 @@ class ScanMapper {
   std::unique_ptr<LidarOdometry> odometry_;
   OdometryResult last_odometry_;
   std::unique_ptr<LogOddsMap> log_odds_;
+  std::unique_ptr<LogOddsGrid2D> grid_2d_;
 };
 
 /// \brief The points of `scan` whose distance from the origin lies in [min_range, max_range].

@@ -74,19 +74,10 @@ TrinaryMap projectBand(const LogOddsMap& map, double z_min, double z_max) {
   return m;
 }
 
-void writeTrinaryMapServer(const TrinaryMap& map, const std::string& pgm_path,
-                           const std::string& preview_png) {
-  MapServerFiles files = mapServerFiles(pgm_path);
-  writeTrinaryMapServer(map, files.pgm, files.yaml, preview_png, files.image_name);
-}
-
-void writeTrinaryMapServer(const TrinaryMap& map, const std::string& pgm_path,
-                           const std::string& yaml_path, const std::string& preview_png,
-                           const std::string& image) {
+MapServerImage mapServerImage(const TrinaryMap& map) {
   if (map.width == 0) throw std::invalid_argument("the trinary map is empty");
-  writeMapServer(
-      {map.width, map.height, map.resolution, map.origin_x, map.origin_y, map.cells, true},
-      {pgm_path, yaml_path, preview_png, "", image});
+  return {map.width,    map.height, map.resolution,        map.origin_x,
+          map.origin_y, map.cells,  MapServerMode::Trinary};
 }
 
 std::vector<Eigen::Vector3d> voxelCenters(const LogOddsMap& map, bool occupied) {

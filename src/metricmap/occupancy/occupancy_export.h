@@ -10,12 +10,10 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
+#include "metricmap/common/map_server_image.h"
 #include "metricmap/occupancy/log_odds_map.h"
 
 namespace metricmap {
-
-/// \brief map_server's trinary values.
-constexpr std::uint8_t kMapOccupied = 0, kMapFree = 254, kMapUnknown = 205;
 
 /// \brief A top-down (x right, y up) trinary image; row 0 holds the largest y. origin is the
 /// world (x, y) of the lower-left corner of the lower-left pixel.
@@ -33,17 +31,9 @@ struct TrinaryMap {
 /// known voxel lies in the band
 TrinaryMap projectBand(const LogOddsMap& map, double z_min, double z_max);
 
-/// \brief Write the PGM (P5) and the YAML beside it (same stem): image, mode trinary,
-/// resolution, origin [x, y, 0], negate 0, occupied_thresh 0.65, free_thresh 0.196; and a PNG
-/// preview when `preview_png` is not empty. Each file through a temporary name and a rename.
-void writeTrinaryMapServer(const TrinaryMap& map, const std::string& pgm_path,
-                           const std::string& preview_png = "");
-
-/// \brief The same with every path given (e.g. OutputSet temporaries): the PGM, the YAML, the
-/// preview (or ""), and the image name the YAML records.
-void writeTrinaryMapServer(const TrinaryMap& map, const std::string& pgm_path,
-                           const std::string& yaml_path, const std::string& preview_png,
-                           const std::string& image_name);
+/// \brief The map as map_server reads it (io/map_server.h writes it), `mode: trinary`.
+/// \throws std::invalid_argument for an empty map
+MapServerImage mapServerImage(const TrinaryMap& map);
 
 /// \brief The centres of the occupied voxels (`occupied` true) or of the free ones.
 std::vector<Eigen::Vector3d> voxelCenters(const LogOddsMap& map, bool occupied);
