@@ -1,5 +1,6 @@
-// metricmap map SOURCE --poses reference|odometry: a 2D hit map (map_server PGM + YAML) and the
-// global cloud of any scan source, built from the source's reference poses or from odometry.
+// metricmap map SOURCE --poses reference|odometry: a 2D hit map and a 2D log-odds occupancy grid
+// (map_server PGM + YAML) and the global cloud of any scan source, built from the source's
+// reference poses or from odometry.
 #include <cstdio>
 #include <memory>
 
@@ -14,6 +15,7 @@
 #include "metricmap/io/map_server.h"
 #include "metricmap/io/output_set.h"
 #include "metricmap/sequence/sequence_mapper.h"
+#include "occupancy_2d_options.h"
 #include "sequence_options.h"
 
 namespace metricmap::cli {
@@ -27,15 +29,13 @@ struct MapOptions {
   double resolution = 0.1, voxel = 0.0;
   std::optional<double> min_height, max_height;
   unsigned min_hits = 1;
+  Occupancy2DOptions grid;
 };
 
 void run(const MapOptions& o) {
   const auto t_start = std::chrono::steady_clock::now();
   std::unique_ptr<ScanSource> source = openSource(o.source);
-  std::vector<std::size_t> frames = selectedFrames(o.source);
-  if (frames.empty()) {
-    for (std::size_t i = 0; i < source->size(); ++i) frames.push_back(i);
-  }
+  const std::vector<std::size_t> frames = selectedFrames(o.source, *source);
   std::vector<Eigen::Isometry3d> poses;
   if (o.poses == "odometry") {
     OdometryRunOptions ro;
@@ -55,6 +55,7 @@ void run(const MapOptions& o) {
   c.keep_global_cloud = !o.out_cloud.empty();
   if (o.min_height) c.min_height = *o.min_height;
   if (o.max_height) c.max_height = *o.max_height;
+  c.occupancy_2d = occupancy2DConfig(o.grid);
   SequenceMapper builder(*source, c);
   const ScanMapper& maps = builder.build(poses, frames);
 
@@ -73,15 +74,17 @@ void run(const MapOptions& o) {
   if (!o.out_cloud.empty()) {
     savePcdAtomic(outputs.stage(o.out_cloud), maps.globalCloud(), parsePcdFormat(o.pcd_format));
   }
-  const nlohmann::json j = {{"source", source->info().path},
-                            {"poses", o.poses},
-                            {"frames", frames.size()},
-                            {"map",
-                             {{"width", image.width},
-                              {"height", image.height},
-                              {"resolution", c.map_resolution},
-                              {"occupied_cells", maps.occupiedCells()}}},
-                            {"seconds", secondsSince(t_start)}};
+  const nlohmann::json grid = writeOccupancy2D(maps, o.grid, outputs);
+  nlohmann::json j = {{"source", source->info().path},
+                      {"poses", o.poses},
+                      {"frames", frames.size()},
+                      {"map",
+                       {{"width", image.width},
+                        {"height", image.height},
+                        {"resolution", c.map_resolution},
+                        {"occupied_cells", maps.occupiedCells()}}},
+                      {"seconds", secondsSince(t_start)}};
+  if (!grid.is_null()) j["occupancy_2d"] = grid;
   if (o.format == "json") {
     emit(j.dump(2) + "\n", outputs);
     return;
@@ -91,7 +94,15 @@ void run(const MapOptions& o) {
                 "%zu frames (%s poses): map %d x %d cells of %g m, %zu occupied, %.2f s\n",
                 frames.size(), o.poses.c_str(), image.width, image.height, c.map_resolution,
                 maps.occupiedCells(), secondsSince(t_start));
-  emit(line, outputs);
+  std::string text = line;
+  if (!grid.is_null()) {
+    std::snprintf(line, sizeof line,
+                  "2D occupancy: %d x %d cells of %g m, %zu occupied, %zu free\n",
+                  grid["width"].get<int>(), grid["height"].get<int>(), o.grid.resolution,
+                  grid["occupied_cells"].get<std::size_t>(), grid["free_cells"].get<std::size_t>());
+    text += line;
+  }
+  emit(text, outputs);
 }
 
 }  // namespace
@@ -125,8 +136,9 @@ void addMapCommand(CLI::App& app) {
   sub->add_option("--max-height", o->max_height, "Highest point mapped (m)")->check(kFinite);
   sub->add_option("--voxel", o->voxel, "Average the global cloud in cells of this size (m)")
       ->check(kFiniteNonNegative);
+  addOccupancy2DOptions(*sub, o->grid);
   addFormatOption(*sub, o->format, {"table", "json"});
-  sub->callback([o] {
+  sub->callback([o, sub] {
     if (o->poses != "odometry" && (o->ranges.max_range || o->ranges.min_range ||
                                    o->ranges.voxel_size || !o->profile.empty())) {
       throw CLI::ValidationError("--max-range/--min-range/--voxel-size/--profile",
@@ -135,9 +147,11 @@ void addMapCommand(CLI::App& app) {
     if (o->min_height && o->max_height && !(*o->min_height < *o->max_height)) {
       throw CLI::ValidationError("--min-height", "must be below --max-height");
     }
-    if (o->out_map.empty() && o->out_cloud.empty()) {
-      throw CLI::ValidationError("--out-map", "give --out-map and/or --out-cloud");
+    if (o->out_map.empty() && o->out_cloud.empty() && o->grid.out.empty()) {
+      throw CLI::ValidationError("--out-map",
+                                 "give --out-map, --out-occupancy-2d and/or --out-cloud");
     }
+    checkOccupancy2DOptions(*sub, o->grid);
     checkRangeOptions(o->ranges);
     checkSourceOptions(o->source);
     RolePaths outputs = {{"--out-cloud", o->out_cloud}};
@@ -148,6 +162,7 @@ void addMapCommand(CLI::App& app) {
                                      {"--out-map (its preview)", f.preview_png},
                                      {"--out-map (its heat map)", f.heat_png}});
     }
+    for (const auto& role : occupancy2DOutputs(o->grid)) outputs.push_back(role);
     requireDistinctFiles(sourceInputs(o->source), outputs);
     requireExtension("--out-map", o->out_map, {".pgm"}, "a map_server PGM with its YAML");
     requireExtension("--out-cloud", o->out_cloud, {".pcd"}, "a PCD cloud");

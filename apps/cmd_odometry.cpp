@@ -37,7 +37,7 @@ void run(const OdometryOptions& o) {
   const auto t_start = std::chrono::steady_clock::now();
   std::unique_ptr<ScanSource> source = openSource(o.source);
   OdometryRunOptions ro;
-  ro.frames = selectedFrames(o.source);
+  ro.frames = selectedFrames(o.source, *source);
   ro.config.threads = o.threads;
   applyRangeOptions(o.ranges, o.profile, source->info(), ro.config, ro.profile);
   ro.deskew = o.no_deskew        ? DeskewMode::Off

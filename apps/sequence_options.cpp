@@ -4,6 +4,7 @@
 
 #include "metricmap/common/format_number.h"
 #include "metricmap/datasets/kitti_sequence.h"
+#include "metricmap/exceptions.h"
 
 namespace metricmap::cli {
 
@@ -71,8 +72,20 @@ std::unique_ptr<ScanSource> openSource(const SourceOptions& o) {
   return openScanSource(o.path, so);
 }
 
-std::vector<std::size_t> selectedFrames(const SourceOptions& o) {
-  return o.frames.empty() ? std::vector<std::size_t>{} : parseFrameList(o.frames);
+std::vector<std::size_t> selectedFrames(const SourceOptions& o, const ScanSource& source) {
+  std::vector<std::size_t> frames;
+  if (o.frames.empty()) {
+    for (std::size_t i = 0; i < source.size(); ++i) frames.push_back(i);
+    return frames;
+  }
+  frames = parseFrameList(o.frames);
+  for (std::size_t f : frames) {
+    if (f >= source.size()) {
+      throw InputError("--frames " + o.frames + ": frame " + std::to_string(f) + " is beyond " +
+                       source.info().path + " (" + std::to_string(source.size()) + " scans)");
+    }
+  }
+  return frames;
 }
 
 void addRangeOptions(CLI::App& app, RangeOptions& o, std::string& profile) {

@@ -29,8 +29,9 @@ void checkSourceOptions(const SourceOptions& o);
 /// the reference and times files).
 RolePaths sourceInputs(const SourceOptions& o);
 std::unique_ptr<ScanSource> openSource(const SourceOptions& o);
-/// \brief The frames --frames names (empty: all).
-std::vector<std::size_t> selectedFrames(const SourceOptions& o);
+/// \brief The frames --frames names, or every frame of the source.
+/// \throws InputError naming the option and the source for a frame beyond its scans
+std::vector<std::size_t> selectedFrames(const SourceOptions& o, const ScanSource& source);
 
 struct RangeOptions {
   std::optional<double> max_range, min_range, voxel_size;

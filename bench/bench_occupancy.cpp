@@ -10,6 +10,7 @@
 #include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/occupancy/log_odds_map.h"
+#include "metricmap/occupancy/ray_kernel.h"
 
 namespace metricmap::bench {
 namespace {
@@ -89,6 +90,13 @@ void BM_LogOddsMapFreshScan(benchmark::State& state) {
   ourCounters(state, map, s.points.size());
 }
 
+// The same with the portable (plain C++) ray walk forced: the walk of non-x86 CPUs, against the
+// SIMD walk of BM_LogOddsMapFreshScan in the same run (issue 25: within 3x).
+void BM_LogOddsMapFreshScanPortable(benchmark::State& state) {
+  const detail::ScopedRayPath portable(detail::RayPath::Portable);
+  BM_LogOddsMapFreshScan(state);
+}
+
 void BM_OctomapFreshScan(benchmark::State& state) {
   const Scan& s = scans()[0];
   const octomap::point3d origin(s.origin.x(), s.origin.y(), s.origin.z());
@@ -125,6 +133,11 @@ void BM_OctomapAccumulated(benchmark::State& state) {
 }
 
 BENCHMARK(BM_LogOddsMapFreshScan)->Arg(200)->Arg(100)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK(BM_LogOddsMapFreshScanPortable)
+    ->Arg(200)
+    ->Arg(100)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0);
 BENCHMARK(BM_OctomapFreshScan)->Arg(200)->Arg(100)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_LogOddsMapAccumulated)
     ->Arg(200)

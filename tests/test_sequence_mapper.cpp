@@ -16,6 +16,13 @@ metricmap::ScanMapperConfig config() {
   c.voxel = 0.2;
   c.min_height = -1.0;
   c.max_height = 1.0;
+  metricmap::LogOddsParams l;
+  l.resolution = 0.2;
+  l.max_range = 20.0;
+  c.occupancy = l;
+  metricmap::Occupancy2DConfig g;
+  g.params.resolution = 0.05;
+  c.occupancy_2d = g;
   return c;
 }
 
@@ -51,6 +58,30 @@ TEST(SequenceMapper, RebuildEqualsAFreshBuildWithTheNewTrajectory) {
     ASSERT_EQ(ca[i].y, cb[i].y);
     ASSERT_EQ(ca[i].z, cb[i].z);
   }
+  // the log-odds maps, 3D and 2D: the same cells with the same log-odds bits
+  const metricmap::LogOddsMap &la = *rebuilt.occupancy(), &lb = *fresh.occupancy();
+  ASSERT_EQ(la.knownVoxels(), lb.knownVoxels());
+  ASSERT_GT(la.knownVoxels(), 1000u);
+  std::size_t differing = 0;
+  la.forEachKnown([&](const metricmap::VoxelKey& k, float l) {
+    const auto other = lb.logOdds(k);
+    differing += (!other || *other != l) ? 1 : 0;
+  });
+  EXPECT_EQ(differing, 0u);
+  const metricmap::LogOddsGrid2D &ga = *rebuilt.occupancy2D(), &gb = *fresh.occupancy2D();
+  ASSERT_GT(ga.knownCells(), 1000u);
+  EXPECT_EQ(ga.knownCells(), gb.knownCells());
+  EXPECT_EQ(ga.occupiedCells(), gb.occupiedCells());
+  std::size_t differing_2d = 0;
+  ga.forEachKnown([&](std::int64_t i, std::int64_t j, float l) {
+    differing_2d += (gb.state(i, j) == metricmap::CellState::Unknown || gb.logOdds(i, j) != l);
+  });
+  EXPECT_EQ(differing_2d, 0u);
+  const metricmap::MapServerImage ta = ga.probabilityImage(), tb = gb.probabilityImage();
+  EXPECT_EQ(ta.width, tb.width);
+  EXPECT_EQ(ta.origin_x, tb.origin_x);
+  EXPECT_EQ(ta.origin_y, tb.origin_y);
+  EXPECT_EQ(ta.pixels, tb.pixels);
   // The two trajectories differ by millimetres, so the maps differ a little but not much: the
   // rebuild did use the new poses.
   EXPECT_NE(first.hits, a.hits);

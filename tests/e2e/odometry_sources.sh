@@ -81,7 +81,7 @@ printf 'VERSION 0.7\nFIELDS x y z t\nSIZE 4 4 4 1\nTYPE F F F U\nCOUNT 1 1 1 1\n
 expect 1 "time field 't'" -- "$MM" odometry "$tmp/u8" --out-poses "$tmp/never.txt"
 expect 2 "--frames" -- "$MM" odometry "$tmp/bad" --frames 2,1 --out-poses "$tmp/never.txt"
 expect 2 "--frames" -- "$MM" odometry "$tmp/bad" --frames 0,0 --out-poses "$tmp/never.txt"
-expect 1 "no scan 7" -- "$MM" odometry "$tmp/bad" --frames 0,7 --out-poses "$tmp/never.txt"
+expect 1 "frame 7 is beyond" -- "$MM" odometry "$tmp/bad" --frames 0,7 --out-poses "$tmp/never.txt"
 expect 2 "--max-range" -- "$MM" odometry "$tmp/bad" --max-range 1e308
 expect 2 "--voxel-size" -- "$MM" odometry "$tmp/bad" --voxel-size 1e-300
 expect 2 "--voxel-size" -- "$MM" map "$tmp/bad" --poses odometry --voxel-size 1e5 --out-map "$tmp/never.pgm"

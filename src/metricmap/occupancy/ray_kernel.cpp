@@ -1,12 +1,20 @@
 #include "metricmap/occupancy/ray_kernel.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <sstream>
 
+// The SIMD walks need SSE2 and 64-bit lanes moved to general registers (x86-64); elsewhere only
+// the portable walk is compiled.
+#if defined(__SSE2__) && defined(__x86_64__)
+#define METRICMAP_RAY_SIMD 1
 #include <immintrin.h>
+#else
+#define METRICMAP_RAY_SIMD 0
+#endif
 
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/detail/fast_floor.h"
@@ -38,6 +46,22 @@ void BlockHashIndex::grow() {
     ++size_;
   }
 }
+
+namespace {
+
+std::atomic<RayPath> g_ray_path{RayPath::Simd};
+
+}  // namespace
+
+RayPath rayPath() {
+#if METRICMAP_RAY_SIMD
+  return g_ray_path.load(std::memory_order_relaxed);
+#else
+  return RayPath::Portable;
+#endif
+}
+
+void setRayPathForTesting(RayPath path) { g_ray_path.store(path, std::memory_order_relaxed); }
 
 namespace {
 
@@ -125,10 +149,9 @@ bool keyOf(const float p[3], double inv_res, Key3& key) {
 }
 
 /// One beam being walked: OctoMap's computeRayKeys state (Amanatides & Woo in double from
-/// float coordinates). The crossing parameters live in SSE2 registers (low lane) so a step
-/// needs no branch.
+/// float coordinates): crossing parameters t, their steps dt, the length; keys, steps, end key.
 struct Beam {
-  __m128d t[3], dt[3], length;
+  double t[3], dt[3], length;
   std::int64_t k[3], step[3];
   std::int32_t ke[3];
 };
@@ -154,19 +177,139 @@ void startBeam(const float o[3], const float e[3], const Key3& ko, const std::in
       t_max = (border - static_cast<double>(o[i])) / static_cast<double>(dir[i]);
       t_delta = res / static_cast<double>(std::fabs(dir[i]));
     }
-    b.t[i] = _mm_set_sd(t_max);
-    b.dt[i] = _mm_set_sd(t_delta);
+    b.t[i] = t_max;
+    b.dt[i] = t_delta;
   }
-  b.length = _mm_set_sd(static_cast<double>(length));
+  b.length = static_cast<double>(length);
 }
+
+/// A bit per voxel of the scan's box, x fastest, rows padded to 64 bits: a step moves the bit
+/// index by a fixed stride per axis, so marking costs no multiplication.
+struct LinearBits {
+  std::uint64_t* bits;
+  std::int64_t x0, y0, z0, row_bits, slice_bits;
+  std::int64_t index(std::int64_t x, std::int64_t y, std::int64_t z) const {
+    return (x - x0) + (y - y0) * row_bits + (z - z0) * slice_bits;
+  }
+  void set(std::int64_t i) { bits[i >> 6] |= std::uint64_t{1} << (i & 63); }
+};
+
+// The portable walk: the SSE2 walk's operations one for one in plain double, so the same
+// voxels on every CPU. Ordered `<` and `>` are false on NaN as cmplt_sd and comigt_sd are;
+// min_sd(a, b) is `a < b ? a : b`; an axis not taken gets `+ 0.0` as `t + (mask & dt)` does.
+
+/// The crossing parameters of one beam in the portable walk.
+struct PortableT {
+  double tx, ty, tz, dx, dy, dz, len;
+};
+
+inline void initT(const Beam& b, PortableT& t) {
+  t.tx = b.t[0];
+  t.ty = b.t[1];
+  t.tz = b.t[2];
+  t.dx = b.dt[0];
+  t.dy = b.dt[1];
+  t.dz = b.dt[2];
+  t.len = b.length;
+}
+
+/// `v` where `mask` is all ones, +0.0 where it is zero (and_pd): no branch to mispredict.
+inline double keepIf(std::int64_t mask, double v) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &v, 8);
+  bits &= static_cast<std::uint64_t>(mask);
+  std::memcpy(&v, &bits, 8);
+  return v;
+}
+
+/// One crossing: OctoMap's choice, ties included (x if tx < ty and tx < tz, else y if
+/// ty < tz, else z); the chosen axis's mask all ones, the others zero (as maskBits).
+inline void crossPortable(PortableT& t, std::int64_t& bx, std::int64_t& by, std::int64_t& bz) {
+  const bool x_lt_y = t.tx < t.ty;
+  const bool mx = x_lt_y & (t.tx < t.tz);
+  const bool my = !x_lt_y & (t.ty < t.tz);
+  const bool mz = !(mx | my);
+  bx = -static_cast<std::int64_t>(mx);
+  by = -static_cast<std::int64_t>(my);
+  bz = -static_cast<std::int64_t>(mz);
+  t.tx = t.tx + keepIf(bx, t.dx);
+  t.ty = t.ty + keepIf(by, t.dy);
+  t.tz = t.tz + keepIf(bz, t.dz);
+}
+
+/// OctoMap's guard against accumulated rounding: the next crossing lies beyond the end.
+inline bool pastEndPortable(const PortableT& t) {
+  const double m = t.tx < t.ty ? t.tx : t.ty;
+  return (m < t.tz ? m : t.tz) > t.len;
+}
+
+/// The portable walkBeam.
+template <typename Sink>
+inline void walkBeamPortable(const Beam& b, Sink& sink) {
+  PortableT t;
+  initT(b, t);
+  std::int64_t kx = b.k[0], ky = b.k[1], kz = b.k[2];
+  const std::int64_t sx = b.step[0], sy = b.step[1], sz = b.step[2];
+  const std::int64_t ex = b.ke[0], ey = b.ke[1], ez = b.ke[2];
+  for (;;) {
+    std::int64_t bx, by, bz;
+    crossPortable(t, bx, by, bz);
+    kx += sx & bx;
+    ky += sy & by;
+    kz += sz & bz;
+    if (((kx ^ ex) | (ky ^ ey) | (kz ^ ez)) == 0) return;
+    if (pastEndPortable(t)) return;
+    sink.markFree(kx, ky, kz);
+  }
+}
+
+/// The portable LinearState.
+struct PortableState {
+  PortableT t;
+  std::int64_t kx, ky, kz, sx, sy, sz, ix, iy, iz, ex, ey, ez, idx;
+};
+
+inline void initState(const Beam& b, const LinearBits& free, PortableState& s) {
+  initT(b, s.t);
+  s.kx = b.k[0];
+  s.ky = b.k[1];
+  s.kz = b.k[2];
+  s.sx = b.step[0];
+  s.sy = b.step[1];
+  s.sz = b.step[2];
+  s.ix = s.sx;
+  s.iy = s.sy * free.row_bits;
+  s.iz = s.sz * free.slice_bits;
+  s.ex = b.ke[0];
+  s.ey = b.ke[1];
+  s.ez = b.ke[2];
+  s.idx = free.index(s.kx, s.ky, s.kz);
+}
+
+/// The portable stepState.
+inline bool stepState(PortableState& s, std::uint64_t* bits) {
+  std::int64_t bx, by, bz;
+  crossPortable(s.t, bx, by, bz);
+  s.kx += s.sx & bx;
+  s.ky += s.sy & by;
+  s.kz += s.sz & bz;
+  s.idx += (s.ix & bx) + (s.iy & by) + (s.iz & bz);
+  if (((s.kx ^ s.ex) | (s.ky ^ s.ey) | (s.kz ^ s.ez)) == 0) return false;
+  if (pastEndPortable(s.t)) return false;
+  bits[s.idx >> 6] |= std::uint64_t{1} << (s.idx & 63);
+  return true;
+}
+
+#if METRICMAP_RAY_SIMD
 
 inline std::int64_t maskBits(__m128d m) { return _mm_cvtsi128_si64(_mm_castpd_si128(m)); }
 
 /// Walks one beam to its end, the state in locals (registers).
 template <typename Sink>
-inline void walkBeam(Beam b, Sink& sink) {
-  __m128d tx = b.t[0], ty = b.t[1], tz = b.t[2];
-  const __m128d dx = b.dt[0], dy = b.dt[1], dz = b.dt[2], len = b.length;
+inline void walkBeam(const Beam& b, Sink& sink) {
+  __m128d tx = _mm_set_sd(b.t[0]), ty = _mm_set_sd(b.t[1]), tz = _mm_set_sd(b.t[2]);
+  const __m128d dx = _mm_set_sd(b.dt[0]), dy = _mm_set_sd(b.dt[1]), dz = _mm_set_sd(b.dt[2]);
+  const __m128d len = _mm_set_sd(b.length);
   std::int64_t kx = b.k[0], ky = b.k[1], kz = b.k[2];
   const std::int64_t sx = b.step[0], sy = b.step[1], sz = b.step[2];
   const std::int64_t ex = b.ke[0], ey = b.ke[1], ez = b.ke[2];
@@ -190,62 +333,21 @@ inline void walkBeam(Beam b, Sink& sink) {
   }
 }
 
-/// A bit per voxel of the scan's box, x fastest, rows padded to 64 bits: a step moves the bit
-/// index by a fixed stride per axis, so marking costs no multiplication.
-struct LinearBits {
-  std::uint64_t* bits;
-  std::int64_t x0, y0, z0, row_bits, slice_bits;
-  std::int64_t index(std::int64_t x, std::int64_t y, std::int64_t z) const {
-    return (x - x0) + (y - y0) * row_bits + (z - z0) * slice_bits;
-  }
-  void set(std::int64_t i) { bits[i >> 6] |= std::uint64_t{1} << (i & 63); }
-};
-
-/// walkBeam's loop, marking into LinearBits.
-inline void walkBeamLinear(const Beam& b, LinearBits& free) {
-  __m128d tx = b.t[0], ty = b.t[1], tz = b.t[2];
-  const __m128d dx = b.dt[0], dy = b.dt[1], dz = b.dt[2], len = b.length;
-  std::int64_t kx = b.k[0], ky = b.k[1], kz = b.k[2];
-  const std::int64_t sx = b.step[0], sy = b.step[1], sz = b.step[2];
-  const std::int64_t ix = sx, iy = sy * free.row_bits, iz = sz * free.slice_bits;
-  const std::int64_t ex = b.ke[0], ey = b.ke[1], ez = b.ke[2];
-  std::int64_t idx = free.index(kx, ky, kz);
-  std::uint64_t* bits = free.bits;
-  const __m128d ones = _mm_castsi128_pd(_mm_set1_epi64x(-1));
-  for (;;) {
-    const __m128d x_lt_y = _mm_cmplt_sd(tx, ty);
-    const __m128d mx = _mm_and_pd(x_lt_y, _mm_cmplt_sd(tx, tz));
-    const __m128d my = _mm_andnot_pd(x_lt_y, _mm_cmplt_sd(ty, tz));
-    const __m128d mz = _mm_andnot_pd(_mm_or_pd(mx, my), ones);
-    tx = _mm_add_sd(tx, _mm_and_pd(mx, dx));
-    ty = _mm_add_sd(ty, _mm_and_pd(my, dy));
-    tz = _mm_add_sd(tz, _mm_and_pd(mz, dz));
-    const std::int64_t bx = maskBits(mx), by = maskBits(my), bz = maskBits(mz);
-    kx += sx & bx;
-    ky += sy & by;
-    kz += sz & bz;
-    idx += (ix & bx) + (iy & by) + (iz & bz);
-    if (((kx ^ ex) | (ky ^ ey) | (kz ^ ez)) == 0) return;
-    if (_mm_comigt_sd(_mm_min_sd(_mm_min_sd(tx, ty), tz), len)) return;
-    bits[idx >> 6] |= std::uint64_t{1} << (idx & 63);
-  }
-}
-
-/// walkBeamLinear's state, so that two beams can be stepped in one loop (their steps are
-/// independent, which hides the latency of each).
+/// walkBeam's state marking into LinearBits, so that two beams can be stepped in one loop
+/// (their steps are independent, which hides the latency of each).
 struct LinearState {
   __m128d tx, ty, tz, dx, dy, dz, len;
   std::int64_t kx, ky, kz, sx, sy, sz, ix, iy, iz, ex, ey, ez, idx;
 };
 
 inline void initState(const Beam& b, const LinearBits& free, LinearState& s) {
-  s.tx = b.t[0];
-  s.ty = b.t[1];
-  s.tz = b.t[2];
-  s.dx = b.dt[0];
-  s.dy = b.dt[1];
-  s.dz = b.dt[2];
-  s.len = b.length;
+  s.tx = _mm_set_sd(b.t[0]);
+  s.ty = _mm_set_sd(b.t[1]);
+  s.tz = _mm_set_sd(b.t[2]);
+  s.dx = _mm_set_sd(b.dt[0]);
+  s.dy = _mm_set_sd(b.dt[1]);
+  s.dz = _mm_set_sd(b.dt[2]);
+  s.len = _mm_set_sd(b.length);
   s.kx = b.k[0];
   s.ky = b.k[1];
   s.kz = b.k[2];
@@ -281,21 +383,6 @@ inline bool stepState(LinearState& s, std::uint64_t* bits) {
   return true;
 }
 
-/// Two beams at a time until one ends, then the other alone.
-inline void walkPair(const Beam& a, const Beam& b, LinearBits& free) {
-  LinearState sa, sb;
-  initState(a, free, sa);
-  initState(b, free, sb);
-  std::uint64_t* bits = free.bits;
-  bool ra = true, rb = true;
-  while (ra && rb) {
-    ra = stepState(sa, bits);
-    rb = stepState(sb, bits);
-  }
-  while (ra) ra = stepState(sa, bits);
-  while (rb) rb = stepState(sb, bits);
-}
-
 /// The beams of a scan one at a time for the four-lane walk: marks each end's hit and the
 /// origin's voxel as the pairwise walk does, skips beams that end in the origin's voxel.
 struct BeamFeed {
@@ -320,7 +407,7 @@ struct BeamFeed {
 };
 
 /// Four beams' walks in the lanes of AVX2 registers (x86-64 with AVX2 only; chosen at run
-/// time). Each lane does walkBeamLinear's arithmetic, operation for operation, in double, so
+/// time). Each lane does stepState's arithmetic, operation for operation, in double, so
 /// the voxels are the same; a lane whose beam ends takes the next one. Voxels of lanes that are
 /// done are marked in the spare word `spare` (bit index), which the caller clears.
 __attribute__((target("avx2"))) void walkFeedAvx2(BeamFeed& feed, LinearBits& free,
@@ -339,14 +426,9 @@ __attribute__((target("avx2"))) void walkFeedAvx2(BeamFeed& feed, LinearBits& fr
       active &= ~(1 << l);
       return;
     }
-    double t[7];
-    for (int a = 0; a < 3; ++a) {
-      std::memcpy(&t[a], &b.t[a], 8);
-      std::memcpy(&t[3 + a], &b.dt[a], 8);
-    }
-    std::memcpy(&t[6], &b.length, 8);
-    tx[l] = t[0], ty[l] = t[1], tz[l] = t[2], dx[l] = t[3], dy[l] = t[4], dz[l] = t[5];
-    len[l] = t[6];
+    tx[l] = b.t[0], ty[l] = b.t[1], tz[l] = b.t[2];
+    dx[l] = b.dt[0], dy[l] = b.dt[1], dz[l] = b.dt[2];
+    len[l] = b.length;
     idx[l] = free.index(b.k[0], b.k[1], b.k[2]);
     eidx[l] = free.index(b.ke[0], b.ke[1], b.ke[2]);
     ix[l] = b.step[0];
@@ -406,6 +488,50 @@ bool haveAvx2() {
   return yes;
 }
 
+#endif  // METRICMAP_RAY_SIMD
+
+/// Two beams at a time until one ends, then the other alone (State: LinearState for the SSE2
+/// walk, PortableState for the portable one).
+template <typename State>
+inline void walkPair(const Beam& a, const Beam& b, LinearBits& free) {
+  State sa, sb;
+  initState(a, free, sa);
+  initState(b, free, sb);
+  std::uint64_t* bits = free.bits;
+  bool ra = true, rb = true;
+  while (ra && rb) {
+    ra = stepState(sa, bits);
+    rb = stepState(sb, bits);
+  }
+  while (ra) ra = stepState(sa, bits);
+  while (rb) rb = stepState(sb, bits);
+}
+
+/// Every beam of the scan into the box, two at a time: each end's hit, the origin's voxel for
+/// each beam that leaves it, the voxels crossed.
+template <typename State>
+void walkPairs(const float o[3], const Key3& ko, const ScanUpdate& up, double res, LinearBits& free,
+               LinearBits& hits) {
+  Beam beams[2];
+  int pending = 0;
+  for (const ScanUpdate::End& end : up.ends) {
+    if (end.hit) hits.set(hits.index(end.k[0], end.k[1], end.k[2]));
+    if (ko.v[0] == end.k[0] && ko.v[1] == end.k[1] && ko.v[2] == end.k[2]) continue;
+    free.set(free.index(ko.v[0], ko.v[1], ko.v[2]));
+    startBeam(o, end.e, ko, end.k, res, beams[pending++]);
+    if (pending == 2) {
+      walkPair<State>(beams[0], beams[1], free);
+      pending = 0;
+    }
+  }
+  if (pending == 1) {
+    State s;
+    initState(beams[0], free, s);
+    while (stepState(s, free.bits)) {
+    }
+  }
+}
+
 /// Moves the set bits of a LinearBits box into the scan's blocks (free or hit words), zeroing
 /// them: each byte of a word is one block row of 8 voxels.
 void harvest(LinearBits& box, std::int64_t words_per_row, std::int64_t rows_y, std::int64_t rows_z,
@@ -434,14 +560,21 @@ void harvest(LinearBits& box, std::int64_t words_per_row, std::int64_t rows_y, s
 /// Walks every beam of the scan, marking the voxels from the origin's up to, not including,
 /// the end's as free and the end voxels of unclipped beams as hits.
 template <typename Sink>
-void walkAll(const float o[3], const Key3& ko, const ScanUpdate& up, double res, Sink& sink) {
+void walkAll(const float o[3], const Key3& ko, const ScanUpdate& up, double res, bool portable,
+             Sink& sink) {
   Beam b;
   for (const ScanUpdate::End& end : up.ends) {
     if (end.hit) sink.markHit(end.k[0], end.k[1], end.k[2]);
     if (ko.v[0] == end.k[0] && ko.v[1] == end.k[1] && ko.v[2] == end.k[2]) continue;
     sink.markFree(ko.v[0], ko.v[1], ko.v[2]);
     startBeam(o, end.e, ko, end.k, res, b);
-    walkBeam(b, sink);
+#if METRICMAP_RAY_SIMD
+    if (!portable) {
+      walkBeam(b, sink);
+      continue;
+    }
+#endif
+    walkBeamPortable(b, sink);
   }
 }
 
@@ -452,6 +585,7 @@ constexpr std::int64_t kDenseWordLimit = std::int64_t{1} << 23;  // 2 x 64 MiB o
 RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
   out.clear();
   out.ends.clear();
+  const bool portable = rayPath() == RayPath::Portable;  // once per scan
   RayCastCounts counts;
   const double res = in.resolution;
   const double inv_res = 1.0 / res;
@@ -519,24 +653,18 @@ RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
                     words_per_row * 64 * ny};
     LinearBits hits = free;
     hits.bits = out.dense.data() + words;
-    if (in.simd && haveAvx2()) {
-      BeamFeed feed{out.ends.data(), out.ends.data() + out.ends.size(), o, ko, res, &free, &hits};
-      walkFeedAvx2(feed, free, static_cast<std::int64_t>(2 * words) * 64);
-      out.dense[2 * words] = 0;
+    if (portable) {
+      walkPairs<PortableState>(o, ko, out, res, free, hits);
     } else {
-      Beam beams[2];
-      int pending = 0;
-      for (const ScanUpdate::End& end : out.ends) {
-        if (end.hit) hits.set(hits.index(end.k[0], end.k[1], end.k[2]));
-        if (ko.v[0] == end.k[0] && ko.v[1] == end.k[1] && ko.v[2] == end.k[2]) continue;
-        free.set(free.index(ko.v[0], ko.v[1], ko.v[2]));
-        startBeam(o, end.e, ko, end.k, res, beams[pending++]);
-        if (pending == 2) {
-          walkPair(beams[0], beams[1], free);
-          pending = 0;
-        }
+#if METRICMAP_RAY_SIMD
+      if (in.simd && haveAvx2()) {
+        BeamFeed feed{out.ends.data(), out.ends.data() + out.ends.size(), o, ko, res, &free, &hits};
+        walkFeedAvx2(feed, free, static_cast<std::int64_t>(2 * words) * 64);
+        out.dense[2 * words] = 0;
+      } else {
+        walkPairs<LinearState>(o, ko, out, res, free, hits);
       }
-      if (pending == 1) walkBeamLinear(beams[0], free);
+#endif
     }
     try {
       harvest(free, words_per_row, ny, nz, false, marker);
@@ -546,7 +674,7 @@ RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
       throw;
     }
   } else {
-    walkAll(o, ko, out, res, marker);
+    walkAll(o, ko, out, res, portable, marker);
   }
   return counts;
 }

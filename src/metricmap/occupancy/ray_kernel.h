@@ -2,6 +2,11 @@
 /// \file ray_kernel.h
 /// \brief The hot loop of LogOddsMap::insertScan: one scan's beams walked voxel by voxel
 /// (Amanatides & Woo, with OctoMap's arithmetic), misses and hits marked per block, each once.
+///
+/// Two walks give the same voxels, bit for bit: the SIMD walk (x86-64: SSE2, four beams per
+/// AVX2 register where the CPU has AVX2) and the portable walk (plain C++, the same double
+/// arithmetic and the same tie-breaking between axes), the only one compiled on other CPUs
+/// (aarch64, ...). setRayPathForTesting forces the portable walk on x86 for tests and benchmarks.
 
 #include <cstddef>
 
@@ -23,7 +28,7 @@ struct RayCastInput {
   /// CapacityError naming the resolution and the budget.
   std::size_t max_blocks = static_cast<std::size_t>(-1);
   /// Walk four beams at a time in AVX2 registers where the CPU has AVX2 (the same voxels as
-  /// the two-beam SSE2 walk, which `false` forces: for tests).
+  /// the two-beam SSE2 walk, which `false` forces: for tests). The portable walk ignores it.
   bool simd = true;
 };
 
@@ -38,5 +43,35 @@ struct RayCastCounts {
 /// \throws CapacityError naming the point when the origin or an endpoint is outside the key
 /// space
 RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out);
+
+/// \brief The walks castRays can take; both mark the same voxels, bit for bit.
+enum class RayPath {
+  Simd,      ///< the default: SSE2 (x86-64), four-lane AVX2 where the CPU has it
+  Portable,  ///< plain C++ in double, any CPU
+};
+
+/// \brief The walk the next castRays takes: always Portable where the SIMD walks are not
+/// compiled (anything but x86-64 with SSE2, e.g. aarch64), else the last setRayPathForTesting
+/// value (Simd at start).
+RayPath rayPath();
+
+/// \brief Forces the walk of every later castRays in the process, so that CI can run the
+/// portable walk on x86 and benchmarks can compare the two. A relaxed atomic that castRays
+/// reads once per scan (never per beam or voxel): any thread may call it; a scan being cast
+/// keeps the walk it started with. Not for production code; restore the default with
+/// ScopedRayPath.
+void setRayPathForTesting(RayPath path);
+
+/// \brief Sets the RayPath for a scope and restores the previous one when it ends.
+class ScopedRayPath {
+ public:
+  explicit ScopedRayPath(RayPath path) : previous_(rayPath()) { setRayPathForTesting(path); }
+  ~ScopedRayPath() { setRayPathForTesting(previous_); }
+  ScopedRayPath(const ScopedRayPath&) = delete;
+  ScopedRayPath& operator=(const ScopedRayPath&) = delete;
+
+ private:
+  RayPath previous_;
+};
 
 }  // namespace metricmap::detail
