@@ -14,7 +14,7 @@
 
 #include "metricmap/occupancy/block_table.h"
 #include "metricmap/occupancy/log_odds_params.h"
-#include "metricmap/occupancy/voxel_key.h"
+#include "metricmap/detail/voxel_key.h"
 
 namespace metricmap {
 

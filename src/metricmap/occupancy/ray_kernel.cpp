@@ -19,7 +19,7 @@
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/detail/fast_floor.h"
 #include "metricmap/exceptions.h"
-#include "metricmap/occupancy/voxel_key.h"
+#include "metricmap/detail/voxel_key.h"
 
 namespace metricmap::detail {
 

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "metricmap/registration/voxel_key.h"
+#include "metricmap/detail/voxel_key.h"
 
 namespace metricmap {
 namespace {
@@ -83,7 +83,7 @@ void firstPerCell(std::size_t n, Get get, double voxel, Take take, Points3d& out
     const Eigen::Vector3d p = get(i);
     if (!take(p)) continue;
     const Eigen::Array3i c = voxelOf(p, inv);
-    const std::uint64_t key = packVoxel(c.x(), c.y(), c.z());
+    const std::uint64_t key = packVoxelKey(c.x(), c.y(), c.z());
     if (key == last) continue;
     last = key;
     if (seen.insert(key)) {

@@ -9,6 +9,8 @@
 #include <emmintrin.h>
 #endif
 
+#include "metricmap/exceptions.h"
+
 namespace metricmap {
 namespace {
 
@@ -115,7 +117,7 @@ std::int32_t VoxelHashMap::findOrAdd(std::uint64_t key) {
 void VoxelHashMap::add(const std::vector<Eigen::Vector3d>& points) {
   for (const Eigen::Vector3d& p : points) {
     const Eigen::Array3i c = voxelOf(p, inv_voxel_);
-    const std::int32_t v = findOrAdd(packVoxel(c.x(), c.y(), c.z()));
+    const std::int32_t v = findOrAdd(packVoxelKey(c.x(), c.y(), c.z()));
     std::int32_t& n = counts_[static_cast<std::size_t>(v)];
     if (static_cast<std::size_t>(n) >= stride_) continue;
     double* x = block(v) + n;
@@ -155,7 +157,7 @@ bool VoxelHashMap::nearestCached(const Eigen::Vector3d& p, double max_distance, 
                                  Eigen::Vector3d& q, std::int32_t* voxel) const {
   const Eigen::Array3d s = p.array() * inv_voxel_;
   const Eigen::Array3i c = voxelOfScaled(s, p);
-  const std::uint64_t key = packVoxel(c.x(), c.y(), c.z());
+  const std::uint64_t key = packVoxelKey(c.x(), c.y(), c.z());
   if (key != hood.key) {
     hood.key = key;
     hood.center = c;
@@ -163,8 +165,9 @@ bool VoxelHashMap::nearestCached(const Eigen::Vector3d& p, double max_distance, 
   }
   auto cellAt = [&](int i) {
     if ((hood.looked_up >> i & 1u) == 0) {
-      hood.cells[i] = find(packVoxel(hood.center.x() + i / 9 - 1, hood.center.y() + i / 3 % 3 - 1,
-                                     hood.center.z() + i % 3 - 1));
+      hood.cells[i] =
+          find(packVoxelKey(hood.center.x() + i / 9 - 1, hood.center.y() + i / 3 % 3 - 1,
+                            hood.center.z() + i % 3 - 1));
       hood.looked_up |= 1u << i;
     }
     return hood.cells[i];
@@ -223,7 +226,7 @@ bool VoxelHashMap::nearest(const Eigen::Vector3d& p, double max_distance,
 
 std::int32_t VoxelHashMap::voxelOfPoint(const Eigen::Vector3d& p) const {
   const Eigen::Array3i c = voxelOf(p, inv_voxel_);
-  return find(packVoxel(c.x(), c.y(), c.z()));
+  return find(packVoxelKey(c.x(), c.y(), c.z()));
 }
 
 std::size_t VoxelHashMap::bytes() const {

@@ -8,7 +8,7 @@
 
 #include <Eigen/Core>
 
-#include "metricmap/registration/voxel_key.h"
+#include "metricmap/detail/voxel_key.h"
 
 namespace metricmap {
 

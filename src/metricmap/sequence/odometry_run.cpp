@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "metricmap/exceptions.h"
 #include "metricmap/registration/deskew.h"
 #include "metricmap/registration/scan_registration.h"
 

@@ -1,6 +1,8 @@
-#include "metricmap/registration/voxel_key.h"
+#include "metricmap/detail/voxel_key.h"
 
 #include <string>
+
+#include "metricmap/exceptions.h"
 
 namespace metricmap {
 
