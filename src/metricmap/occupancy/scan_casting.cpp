@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <stdexcept>
+#include <string>
 
 #include <unistd.h>
 
@@ -69,6 +71,25 @@ void castKittiFrames(LogOddsMap& map, const KittiSequence& sequence,
     totals.load_s += secondsSince(t);
     const Eigen::Vector3f origin = to_world.translation().cast<float>();
     insertInto(map, world_scan, &origin, lr.nonfinite_dropped, totals, sequence.scan(frames[k]));
+    if (progress) progress(k + 1 - first, last - first);
+  }
+}
+
+void castSourceFrames(LogOddsMap& map, ScanSource& source, const std::vector<std::size_t>& frames,
+                      const std::vector<Eigen::Isometry3d>& poses, std::size_t first,
+                      std::size_t last, ScanCastTotals& totals, const CastProgress& progress) {
+  if (poses.size() != frames.size()) {
+    throw std::invalid_argument(std::to_string(poses.size()) + " pose(s) for " +
+                                std::to_string(frames.size()) + " frame(s)");
+  }
+  for (std::size_t k = first; k < last && k < frames.size(); ++k) {
+    const auto t = std::chrono::steady_clock::now();
+    const Scan scan = source.scan(frames[k]);
+    Cloud world_scan;
+    pcl::transformPointCloud(scan.points, world_scan, poses[k].matrix().cast<float>());
+    totals.load_s += secondsSince(t);
+    const Eigen::Vector3f origin = poses[k].translation().cast<float>();
+    insertInto(map, world_scan, &origin, 0, totals, scan.name);
     if (progress) progress(k + 1 - first, last - first);
   }
 }

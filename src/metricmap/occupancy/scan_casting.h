@@ -1,14 +1,18 @@
 #pragma once
 /// \file scan_casting.h
-/// \brief Scans from files cast into a LogOddsMap: KITTI frames (poses file, Tr, world) or PCD
-/// scans whose VIEWPOINT is the sensor pose. What `metricmap occupancy` runs per input.
+/// \brief Scans from files cast into a LogOddsMap: KITTI frames (poses file, Tr, world), the
+/// frames of any scan source at given poses, or PCD scans whose VIEWPOINT is the sensor pose. What
+/// `metricmap occupancy` runs per input.
 
 #include <cstddef>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "metricmap/datasets/kitti_sequence.h"
+#include "metricmap/datasets/scan_source.h"
 #include "metricmap/occupancy/log_odds_map.h"
 
 namespace metricmap {
@@ -29,6 +33,14 @@ using CastProgress = std::function<void(std::size_t, std::size_t)>;
 void castKittiFrames(LogOddsMap& map, const KittiSequence& sequence,
                      const std::vector<std::size_t>& frames, std::size_t first, std::size_t last,
                      KittiWorld world, ScanCastTotals& totals, const CastProgress& progress = {});
+
+/// \brief Cast frames[first, last) of any scan source into `map`: every point of each scan moved
+/// by its pose (`poses[k]`: sensor -> map world for frames[k]), cast from the sensor's position.
+/// \throws InputError naming the scan when it cannot be read; std::invalid_argument when the
+/// counts of frames and poses differ
+void castSourceFrames(LogOddsMap& map, ScanSource& source, const std::vector<std::size_t>& frames,
+                      const std::vector<Eigen::Isometry3d>& poses, std::size_t first,
+                      std::size_t last, ScanCastTotals& totals, const CastProgress& progress = {});
 
 /// \brief Cast PCD scans paths[first, last) into `map`, each from its VIEWPOINT (sensor pose).
 /// \throws InputError naming the file for a file that is not a PCD or has no VIEWPOINT line
