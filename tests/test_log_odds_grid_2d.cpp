@@ -86,6 +86,16 @@ TEST(LogOddsGrid2D, EqualsOctomapOnRandomScans) {
       ends.emplace_back(std::nanf(""), 1.0f);
       ours.insertScan(o, ends);
       oracle.insert(o, ends, range);
+      // diagonals from a cell's centre: every crossing a tie between the axes
+      const float v = 0.05f + 0.1f * static_cast<float>(scan % 7 - 3);
+      const Eigen::Vector2f c(v, v);  // the same arithmetic on both axes: exact ties
+      ends.clear();
+      for (const float d : {2.0f, -1.5f}) {
+        ends.emplace_back(c.x() + d, c.y() + d);
+        ends.emplace_back(c.x() + d, c.y() - d);
+      }
+      ours.insertScan(c, ends);
+      oracle.insert(c, ends, range);
     }
     SCOPED_TRACE(range);
     expectSame(ours, oracle);
