@@ -19,5 +19,6 @@ void addMapCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
 void addOccupancyCommand(CLI::App& app);
 void addEvaluateCommand(CLI::App& app);
+void addPoseGraphCommand(CLI::App& app);
 
 }  // namespace metricmap::cli
