@@ -20,7 +20,7 @@ void addCameraOptions(CLI::App& app, CameraOptions& o) {
           },
           "FX,FY,CX,CY"));
   group->add_option("--hfov-deg", o.hfov_deg, "Horizontal field of view, degrees")
-      ->check(kFinitePositive & CLI::Range(0.0, 179.999));
+      ->check(kFinitePositive & finiteIn(0.0, 179.999));
   group->require_option(1);
   app.add_option("--depth-scale", o.depth_scale, "Metres per raw depth unit")
       ->check(kFinitePositive);

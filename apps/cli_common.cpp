@@ -6,10 +6,13 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <limits>
 #include <optional>
 
+#include "metricmap/common/format_number.h"
 #include "metricmap/common/parse_number.h"
 #include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/io/cloud_reader.h"
@@ -86,12 +89,26 @@ const CLI::Validator kCellEdge(
     },
     "EDGE");
 
+namespace {
+
+/// CLI11 converts integers with strtoll's base 0: `010` would be octal 8, `09` refused as
+/// unconvertible. Decimal text has no leading zero.
+std::string leadingZero(const std::string& s) {
+  if (s.size() > 1 && s[0] == '0') {
+    return "'" + quoteForMessage(s) +
+           "' has a leading zero: write the whole number in decimal without it";
+  }
+  return std::string();
+}
+
+}  // namespace
+
 const CLI::Validator kCount(
     [](std::string& s) -> std::string {
       if (s.empty() || s.size() > 18 || s.find_first_not_of("0123456789") != std::string::npos) {
         return "must be a whole number >= 0, got '" + quoteForMessage(s) + "'";
       }
-      return std::string();
+      return leadingZero(s);
     },
     "COUNT");
 
@@ -101,16 +118,51 @@ CLI::Validator countIn(unsigned long long min, unsigned long long max) {
         const std::string range = std::to_string(min) + " to " + std::to_string(max);
         if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos)
           return "must be a whole number from " + range + ", got '" + quoteForMessage(s) + "'";
-        const std::size_t nz = s.find_first_not_of('0');
-        const std::string digits = nz == std::string::npos ? "0" : s.substr(nz);
+        if (std::string why = leadingZero(s); !why.empty()) return why;
         const std::string top = std::to_string(max);
-        const bool above =
-            digits.size() > top.size() || (digits.size() == top.size() && digits > top);
-        if (above || std::stoull(digits) < min)
+        const bool above = s.size() > top.size() || (s.size() == top.size() && s > top);
+        if (above || std::stoull(s) < min)
           return "'" + quoteForMessage(s) + "' is out of range: " + range;
         return std::string();
       },
       "COUNT");
+}
+
+std::string plainNumber(double value) {
+  const double a = std::fabs(value);
+  const bool plain = a == 0.0 || (a >= 1e-4 && a < 1e15);
+  char buf[40];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, value);
+    const bool exponent = std::strchr(buf, 'e') != nullptr;
+    if (std::strtod(buf, nullptr) == value && (!plain || !exponent)) return buf;
+  }
+  return formatNumber(value);  // nan, inf
+}
+
+CLI::Validator finiteIn(double min, double max) {
+  return CLI::Validator(
+      [min, max](std::string& s) -> std::string {
+        double v = 0.0;
+        std::string why = checkedDouble(s, v);
+        if (why.empty() && !(v >= min && v <= max)) {
+          why = "'" + quoteForMessage(s) + "' is out of range: " + plainNumber(min) + " to " +
+                plainNumber(max);
+        }
+        return why;
+      },
+      "NUMBER");
+}
+
+void refuseIgnored(const CLI::App& app, const std::string& option, bool applies,
+                   const std::string& why) {
+  if (!applies && app.count(option) > 0) throw UsageError(option + " has no effect " + why);
+}
+
+std::string givenText(const CLI::App& app, const std::string& option) {
+  const CLI::Option* opt = app.get_option_no_throw(option);
+  if (opt == nullptr || opt->count() == 0 || opt->results().empty()) return std::string();
+  return opt->results().back();
 }
 
 const CLI::Validator kOutputFile(

@@ -42,12 +42,33 @@ extern const CLI::Validator kFiniteNonNegative;
 /// the map_server YAML and its origin get the same range.
 extern const CLI::Validator kCellEdge;
 
-/// \brief A whole number >= 0 written in decimal digits.
+/// \brief A whole number >= 0 written in decimal digits, without leading zeros (CLI11 would read
+/// `010` as octal 8 and refuse `09`).
 extern const CLI::Validator kCount;
 
-/// \brief A whole number in [min, max] written in decimal digits: checked against the range of
-/// the type it is stored in before it is narrowed (issue 24, class 9).
+/// \brief A whole number in [min, max] written in decimal digits without leading zeros: checked
+/// against the range of the type it is stored in before it is narrowed (issue 24, class 9).
 CLI::Validator countIn(unsigned long long min, unsigned long long max);
+
+/// \brief A number as a message shows a value the program chose (a bound, a default): the
+/// shortest text that reads back as the same value, in plain decimals between 1e-4 and 1e15
+/// (`90`, `179.999`, `0.0001`: never `9e+01` or `90.000000`), with an exponent beyond (`1e-05`,
+/// `1e+308`).
+std::string plainNumber(double value);
+
+/// \brief A finite decimal number in [min, max]; the message quotes the text given and the
+/// bounds as plainNumber (`'1e3' is out of range: -90 to 90`, never `90.000000`).
+CLI::Validator finiteIn(double min, double max);
+
+/// \brief Usage error (exit 2) when `option` was given on `app`'s command line although it has no
+/// effect in this run (`applies` false): "OPTION has no effect WHY" (issue 24, class 6: an option
+/// is honoured or refused, never dropped silently).
+void refuseIgnored(const CLI::App& app, const std::string& option, bool applies,
+                   const std::string& why);
+
+/// \brief The text `option` was given as on `app`'s command line (its last occurrence), for
+/// messages that quote a value as the user wrote it (`1e5`, not `100000`); "" when not given.
+std::string givenText(const CLI::App& app, const std::string& option);
 
 /// \brief An output file name: not empty (`--out ''` would write nothing and succeed).
 extern const CLI::Validator kOutputFile;

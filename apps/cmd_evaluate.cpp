@@ -58,7 +58,7 @@ void addStatsRow(Table& t, const std::string& name, const ErrorStatistics& s) {
             num(s.min), num(s.max)});
 }
 
-std::string runReference(const EvaluateOptions& o) {
+std::string runReference(const EvaluateOptions& o, const CLI::App& app) {
   const Loaded est = load(o.estimate, o.est_format), ref = load(o.reference, o.ref_format);
   EvaluationConfig config;
   config.alignment = parseAlignmentMode(o.align);
@@ -70,6 +70,8 @@ std::string runReference(const EvaluateOptions& o) {
     throw InputError(o.estimate + " against " + o.reference + ": " + e.what());
   }
   const bool by_stamps = ev.pairs.mode == PairingMode::Stamps;
+  refuseIgnored(app, "--max-time-diff", by_stamps,
+                "here: the poses pair by index (a trajectory without time stamps)");
   const std::string pairing =
       by_stamps ? "by time stamps (nearest within " + num(o.max_time_diff) + " s)" : "by index";
   const Alignment& a = ev.alignment;
@@ -231,10 +233,15 @@ void addEvaluateCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_flag("--per-frame", o->per_frame, "Also print the RPE of every frame (table format)");
   addFormatOption(*sub, o->format, {"table", "json"});
-  sub->callback([o] {
+  sub->callback([o, sub] {
     if (o->reference.empty() == o->relations.empty())
       throw UsageError("evaluate needs --reference REF or --relations FILE");
-    emit(o->relations.empty() ? runReference(*o) : runRelations(*o), "");
+    // --per-frame adds a table of the RPE of every frame: JSON always has it, relations none
+    refuseIgnored(*sub, "--per-frame", o->relations.empty() && o->format == "table",
+                  o->relations.empty() ? "with --format json: the JSON always holds the RPE of "
+                                         "every frame (rpe.per_frame)"
+                                       : "with --relations: the relation metric has no frames");
+    emit(o->relations.empty() ? runReference(*o, *sub) : runRelations(*o), "");
   });
 }
 

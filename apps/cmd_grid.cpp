@@ -1,6 +1,9 @@
 // metricmap grid FILE... --cell-size S: occupancy grid statistics, cell means, per-cell CSV.
 // Several files are one input (concatenated). With --distributed (under mpirun) each rank bins
-// its share of the files and the world-aligned cells are reduced over MPI (ranks.h).
+// its share of the files and the cells are reduced over MPI (ranks.h); with the default
+// --origin cloud-min the ranks first agree on the minimum of the whole input (one all-reduce).
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -24,7 +27,7 @@ struct GridOptions {
   std::vector<std::string> files;
   float cell_size = 0.0f;
   std::string origin = "cloud-min";
-  bool origin_given = false, distributed = false;
+  bool distributed = false;
   unsigned threads = 0;  ///< 0: all hardware threads (with --distributed: those of the rank)
   std::string out, cells, format = "table", pcd_format = "binary";
 };
@@ -101,8 +104,62 @@ void finishSeconds(const Ranks& ranks, GridOutcome& g, std::chrono::steady_clock
   g.grid_s = seconds[1];
 }
 
-/// Distributed: each rank bins its share of the files one at a time (world-aligned), the cells
-/// are reduced over the ranks; rank 0 gets the outcome (the others an empty one).
+using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+
+/// Per-axis minimum of the cloud's finite points, as the grid kernel takes it (+inf on every
+/// axis when no point is finite).
+std::vector<double> finiteMinimum(const Cloud& cloud) {
+  std::vector<double> lo(3, std::numeric_limits<double>::infinity());
+  for (const pcl::PointXYZ& p : cloud) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
+    lo[0] = std::min(lo[0], static_cast<double>(p.x));
+    lo[1] = std::min(lo[1], static_cast<double>(p.y));
+    lo[2] = std::min(lo[2], static_cast<double>(p.z));
+  }
+  return lo;
+}
+
+/// A GridOrigin::CloudMinimum build of one rank's share whose indices are those of the
+/// one-process build of the whole input: the cells start at `job_min`, the minimum over every
+/// rank's points (an all-reduce), not at the share's own minimum. The kernel takes the minimum
+/// of its input, so a rank whose minimum is above the job's bins its points with one more point
+/// at `job_min` (the same kernel, the same snapping to cell boundaries), then takes that point out
+/// of its cell: the first one, whose index is the smallest on every axis. The layout's origin is
+/// set to 0 for GridAccumulator::add, which merges cells by index.
+GridResult jobMinimumPart(OccupancyGrid<pcl::PointXYZ>& grid, const Cloud::Ptr& cloud,
+                          const std::vector<double>& job_min) {
+  const std::vector<double> mine = finiteMinimum(*cloud);
+  const bool extra = std::isfinite(mine[0]) && mine != job_min;
+  if (extra) {
+    cloud->push_back(pcl::PointXYZ(static_cast<float>(job_min[0]), static_cast<float>(job_min[1]),
+                                   static_cast<float>(job_min[2])));
+    cloud->width = static_cast<std::uint32_t>(cloud->size());
+    cloud->height = 1;
+  }
+  grid.setOrigin(GridOrigin::CloudMinimum);
+  grid.setInputCloud(cloud);
+  grid.compute();
+  GridResult part{grid.getLayout(), grid.getCells(), grid.getStatistics()};
+  if (extra) {
+    cloud->points.pop_back();
+    cloud->width = static_cast<std::uint32_t>(cloud->size());
+    GridCell& first = part.cells.front();
+    if (first.count == 1) {
+      part.cells.erase(part.cells.begin());
+    } else {
+      const double n = static_cast<double>(first.count);
+      const Eigen::Vector3d m(job_min[0], job_min[1], job_min[2]);
+      first.mean = (first.mean * n - m) / (n - 1.0);
+      --first.count;
+    }
+  }
+  part.layout.origin = Eigen::Vector3d::Zero();
+  return part;
+}
+
+/// Distributed: each rank bins its share of the files (world-aligned, or from the job's cloud
+/// minimum), the cells are reduced over the ranks; rank 0 gets the outcome (the others an empty
+/// one).
 GridOutcome buildRanks(const GridOptions& o, const Ranks& ranks) {
   GridOutcome g;
   GridAccumulator local(o.cell_size);
@@ -120,7 +177,12 @@ GridOutcome buildRanks(const GridOptions& o, const Ranks& ranks) {
     load_s += loaded.seconds;
     *cloud += *loaded.cloud;
   }
-  if (!cloud->empty()) {
+  if (o.origin == "cloud-min") {
+    // every rank takes part in the all-reduce, with or without points
+    std::vector<double> job_min = finiteMinimum(*cloud);
+    ranks.minAll(job_min);
+    if (!cloud->empty()) local.add(jobMinimumPart(grid, cloud, job_min), cloud->size());
+  } else if (!cloud->empty()) {
     grid.setInputCloud(cloud);
     grid.compute();
     local.add({grid.getLayout(), grid.getCells(), grid.getStatistics()}, cloud->size());
@@ -152,14 +214,13 @@ GridOutcome buildRanks(const GridOptions& o, const Ranks& ranks) {
   return g;
 }
 
-void runGrid(GridOptions o) {
+void runGrid(const GridOptions& o, const CLI::App& app) {
   requireDistinctFiles(withRole("input", o.files), {{"--out", o.out}, {"--cells", o.cells}});
   requireExtension("--out", o.out, {".pcd"}, "a PCD cloud");
   requireExtension("--cells", o.cells, {".csv"}, "CSV");
-  if (o.distributed && o.origin_given && o.origin != "world")
-    throw UsageError("--distributed needs --origin world (cells must be world-aligned to merge)");
+  refuseIgnored(app, "--pcd-format", !o.out.empty(),
+                "without --out: it is the encoding of the PCD written there");
   const Ranks ranks(o.distributed);
-  if (o.distributed) o.origin = "world";
   ranks.run([&] {
     const GridOutcome g = o.distributed ? buildRanks(o, ranks) : buildOne(o);
     if (ranks.isRoot()) emitGrid(o, g);
@@ -180,21 +241,21 @@ void addGridCommand(CLI::App& app) {
                   "cloud-min: index = floor((p - min)/cell) (the study's); "
                   "world: floor(p/cell) (pcl::VoxelGrid's)")
       ->check(CLI::IsMember({"cloud-min", "world"}))
-      ->capture_default_str()
-      ->each([o](const std::string&) { o->origin_given = true; });
+      ->capture_default_str();
   sub->add_option("--out", o->out, "Write the cell means as a PCD")->check(kOutputFile);
   sub->add_option("--cells", o->cells, "Write one CSV row per occupied cell")->check(kOutputFile);
   sub->add_option("--threads", o->threads,
                   "Build threads (0: all hardware threads; with --distributed, the node's "
                   "threads shared among its ranks); the result does not depend on it")
-      ->check(CLI::Range(0u, 1024u))
+      ->check(countIn(0, 1024))
       ->capture_default_str();
   sub->add_flag("--distributed", o->distributed,
                 "Run as MPI ranks (mpirun -np N metricmap grid ...): each rank bins its share of "
-                "the files, cells are reduced by tile; needs --origin world (the default then)");
+                "the files, cells are reduced by tile; the one-process result for either "
+                "--origin (cloud-min: the ranks first agree on the input's minimum)");
   addFormatOption(*sub, o->format, {"table", "csv", "json"});
   addPcdFormatOption(*sub, o->pcd_format);
-  sub->callback([o] { runGrid(*o); });
+  sub->callback([o, sub] { runGrid(*o, *sub); });
 }
 
 }  // namespace metricmap::cli

@@ -104,13 +104,57 @@ void writeImages(const HeightMap& map, const std::string& prefix, OutputSet& out
                  map.counts());
 }
 
-void run(const HeightMapOptions& o) {
+/// A TUM trajectory gives frame k the k-th pose line, so it holds exactly one pose line per
+/// depth image: readTumTrajectory checked the first `frames`; a line beyond them (extra poses
+/// would mean the images are not the trajectory's first frames, or not in its order) is an
+/// error naming the file and that line. Blank lines and '#' comments are not pose lines. The
+/// file is scanned in blocks (a line may be as long as the file).
+void requireNoExtraPoses(const std::string& path, std::size_t frames) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open");
+  std::vector<char> block(1 << 16);
+  std::size_t line = 1, poses = 0, column = 0;
+  bool comment = false, content = false;
+  const auto endLine = [&] {
+    if (content && ++poses > frames) {
+      throw InputError(path + ": line " + std::to_string(line) + " is a pose line beyond the " +
+                       std::to_string(frames) +
+                       " depth image(s) given: frame k takes the k-th pose line, so the "
+                       "trajectory must hold one line per image, in order");
+    }
+    ++line;
+    column = 0;
+    comment = content = false;
+  };
+  while (in) {
+    in.read(block.data(), static_cast<std::streamsize>(block.size()));
+    const std::streamsize got = in.gcount();
+    for (std::streamsize i = 0; i < got; ++i) {
+      const char c = block[static_cast<std::size_t>(i)];
+      if (c == '\n') {
+        endLine();
+        continue;
+      }
+      if (column++ == 0 && c == '#') comment = true;
+      if (!comment && c != ' ' && c != '\t' && c != '\r') content = true;
+    }
+  }
+  endLine();  // a last line without a newline
+}
+
+void run(const HeightMapOptions& o, const CLI::App& app) {
   const int sources = (!std::isnan(o.camera_height) ? 1 : 0) + (!o.pose_matrix.empty() ? 1 : 0) +
                       (!o.trajectory.empty() ? 1 : 0) + (o.auto_floor ? 1 : 0);
   if (sources != 1) {
     throw CLI::ValidationError("pose",
                                "give exactly one of --camera-height (with --pitch-deg, "
                                "--yaw-deg), --pose-matrix, --trajectory, --auto-floor");
+  }
+  // --pitch-deg and --yaw-deg turn the camera of --camera-height; any other pose ignores them.
+  for (const char* option : {"--pitch-deg", "--yaw-deg"}) {
+    refuseIgnored(app, option, !std::isnan(o.camera_height),
+                  "without --camera-height: the pose comes from --pose-matrix, --trajectory or "
+                  "--auto-floor");
   }
   {
     RolePaths inputs = withRole("depth image", o.depths);
@@ -125,6 +169,11 @@ void run(const HeightMapOptions& o) {
   params.resolution = o.resolution;
   params.map_size = static_cast<std::size_t>(o.map_size);
   params.z_bins = parseNumbers(o.z_bins, "--z-bins");
+  for (std::size_t i = 1; i < params.z_bins.size(); ++i) {
+    if (!(params.z_bins[i] > params.z_bins[i - 1])) {  // quoted as given: `1e1,1e0`
+      throw UsageError("--z-bins: '" + quoteForMessage(o.z_bins) + "' must be strictly increasing");
+    }
+  }
   const auto cells =
       static_cast<std::uint64_t>(o.map_size) * static_cast<std::uint64_t>(o.map_size);
   // counts (4 bytes a bin) twice (the map and the .npy), five image bytes a cell twice (ours,
@@ -147,7 +196,10 @@ void run(const HeightMapOptions& o) {
   const Eigen::Isometry3d given_pose =
       o.pose_matrix.empty() ? Eigen::Isometry3d::Identity() : poseFromMatrix(o.pose_matrix);
   std::vector<Eigen::Isometry3d> trajectory;
-  if (!o.trajectory.empty()) trajectory = readTumTrajectory(o.trajectory, o.depths.size());
+  if (!o.trajectory.empty()) {
+    trajectory = readTumTrajectory(o.trajectory, o.depths.size());
+    requireNoExtraPoses(o.trajectory, o.depths.size());
+  }
   nlohmann::json floors = nlohmann::json::array();
   double seconds = 0.0;
   for (std::size_t f = 0; f < o.depths.size(); ++f) {
@@ -213,12 +265,12 @@ void addHeightMapCommand(CLI::App& app) {
   sub->add_option("--camera-height", o->camera_height, "Camera height above the floor, metres")
       ->check(kFiniteNonNegative);
   sub->add_option("--pitch-deg", o->pitch_deg, "Camera pitch, degrees (positive: looking down)")
-      ->check(kFinite & CLI::Range(-90.0, 90.0));
-  sub->add_option("--yaw-deg", o->yaw_deg, "Camera yaw, degrees")
-      ->check(kFinite & CLI::Range(-360.0, 360.0));
+      ->check(finiteIn(-90.0, 90.0));
+  sub->add_option("--yaw-deg", o->yaw_deg, "Camera yaw, degrees")->check(finiteIn(-360.0, 360.0));
   sub->add_option("--pose-matrix", o->pose_matrix, "Camera-to-map 4x4, 16 numbers row-major");
   sub->add_option("--trajectory", o->trajectory,
-                  "TUM trajectory (timestamp tx ty tz qx qy qz qw), one line per frame, in order");
+                  "TUM trajectory (timestamp tx ty tz qx qy qz qw), one line per depth image, "
+                  "in order (more lines than images: an error)");
   sub->add_flag("--auto-floor", o->auto_floor,
                 "Fit the floor (RANSAC plane, PCL sample_consensus) and measure heights from it");
   sub->add_option("--resolution", o->resolution, "Cell edge, metres")
@@ -238,7 +290,7 @@ void addHeightMapCommand(CLI::App& app) {
       ->required()
       ->check(kOutputFile);
   addFormatOption(*sub, o->format, {"json", "table"});
-  sub->callback([o] { run(*o); });
+  sub->callback([o, sub] { run(*o, *sub); });
 }
 
 }  // namespace metricmap::cli

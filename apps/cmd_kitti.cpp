@@ -166,8 +166,48 @@ nlohmann::json occupancyJson(const LogOddsMap* map, const std::vector<FrameRepor
           {"seconds", seconds}};
 }
 
-void run(const KittiOptions& o) {
+/// Options that would have no effect in this run are refused, never dropped (issue 24, class 6).
+void refuseIgnoredOptions(const KittiOptions& o, const CLI::App& app) {
+  const bool perturbs = !o.perturb.empty() && perturbation(o.perturb) != std::vector<double>{0, 0};
+  refuseIgnored(
+      app, "--seed", perturbs,
+      "without --perturb T,R (T or R > 0): it seeds the perturbation's random directions");
+  refuseIgnored(app, "--refine-target", !o.refine.empty(),
+                "without --refine icp|gicp: it is what a refined scan is aligned to");
+  refuseIgnored(app, "--target-voxel", !o.refine.empty() && o.refine_target == "map",
+                "without --refine icp|gicp --refine-target map: it is the cell of the "
+                "accumulated registration target");
+  refuseIgnored(app, "--pcd-format", !o.out_cloud.empty(),
+                "without --out-cloud: it is the encoding of the PCD written there");
+  refuseIgnored(app, "--occupancy-max-range", o.occupancy_resolution > 0.0,
+                "without --occupancy-resolution: it cuts the beams of the 3D occupancy map");
+  refuseIgnored(app, "--occupancy-resolution",
+                !o.out_octomap.empty() || !o.out_trinary.empty() || o.format == "json",
+                "without --out-octomap, --out-trinary or --format json: the 3D map would be "
+                "built and shown nowhere");
+  refuseIgnored(app, "--count", o.frames.empty(),
+                "with --frames: it counts frames from --first; give --frames or --first/--count");
+  // The range and height windows, named as given (`1e2`, not `100.000000`).
+  const auto quoted = [&app](const char* option, double value) {
+    const std::string text = givenText(app, option);
+    return std::string(option) + " '" + (text.empty() ? plainNumber(value) : text) + "'";
+  };
+  const ScanMapperConfig& m = o.mapper;
+  if (m.min_range > m.max_range) {
+    throw UsageError(quoted("--min-range", m.min_range) + " exceeds " +
+                     quoted("--max-range", m.max_range) +
+                     ": no return lies between the min range and the max range");
+  }
+  if (m.min_height > m.max_height) {
+    throw UsageError(quoted("--min-height", m.min_height) + " exceeds " +
+                     quoted("--max-height", m.max_height) +
+                     ": no point lies between the min height and the max height");
+  }
+}
+
+void run(const KittiOptions& o, const CLI::App& app) {
   const auto t_start = std::chrono::steady_clock::now();
+  refuseIgnoredOptions(o, app);
   const std::vector<std::size_t> frames = selectFrames(o);
   if (o.poses == "odometry" && !o.perturb.empty()) {
     throw CLI::ValidationError("--perturb",
@@ -286,14 +326,14 @@ void run(const KittiOptions& o) {
     files.pgm = outputs.stage(files.pgm);
     files.yaml = outputs.stage(files.yaml);
     files.preview_png.clear();
-    writeMapServer({t.width, t.height, t.resolution, t.origin_x, t.origin_y, t.cells, true}, files);
+    writeMapServer(mapServerImage(t), files);
   }
   if (!o.out_map.empty()) {
     MapServerFiles files = mapServerFiles(o.out_map);
     for (std::string* path : {&files.pgm, &files.yaml, &files.preview_png, &files.heat_png}) {
       *path = outputs.stage(*path);
     }
-    writeMapServer(image, mapper.config().min_hits, files);
+    writeMapServer(mapServerImage(image, mapper.config().min_hits), files, heatImage(image));
   }
   const std::size_t occupied = mapper.occupiedCells();
   const double write_s = secondsSince(t);
@@ -417,7 +457,9 @@ void addKittiCommand(CLI::App& app) {
             return std::string();
           },
           "T,R"));
-  sub->add_option("--seed", o->seed, "Random seed for --perturb")->capture_default_str();
+  sub->add_option("--seed", o->seed, "Random seed for --perturb")
+      ->check(countIn(0, std::numeric_limits<unsigned>::max()))
+      ->capture_default_str();
   sub->add_option("--poses", o->poses,
                   "file: poses/NN.txt; odometry: from the scans (LidarOdometry), no pose file "
                   "needed (--refine still applies on top)")
@@ -450,7 +492,7 @@ void addKittiCommand(CLI::App& app) {
           },
           "ZMIN,ZMAX"));
   addFormatOption(*sub, o->format, {"table", "json"});
-  sub->callback([o] { run(*o); });
+  sub->callback([o, sub] { run(*o, *sub); });
 }
 
 }  // namespace metricmap::cli

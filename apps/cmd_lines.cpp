@@ -41,10 +41,19 @@ struct LinesOptions {
 
 constexpr double kDeg = M_PI / 180.0;
 
-ScanLog readLog(const LinesOptions& o) {
+ScanLog readLog(const LinesOptions& o, const CLI::App& app) {
   if (o.generic && !o.preset.empty()) {  // the preset would silently override the option
     throw UsageError(o.generic_option + ": --preset " + o.preset +
                      " sets the whole log layout; give --preset or the layout options, not both");
+  }
+  const ScanLineFormat& f = o.scan_format;
+  if (o.generic && !(f.max_range > f.min_range)) {  // named as given: `1e1`, not `10.000000`
+    const auto quoted = [&app](const char* option, double value) {
+      const std::string text = givenText(app, option);
+      return std::string(option) + " '" + (text.empty() ? plainNumber(value) : text) + "'";
+    };
+    throw UsageError(quoted("--min-range", f.min_range) + " must be below " +
+                     quoted("--max-range", f.max_range) + ": no range would be valid");
   }
   if (o.generic && o.preset.empty()) {
     try {
@@ -93,11 +102,20 @@ nlohmann::json segmentJson(const LineSegment& s) {
             {"cov", {{s.fit.cov(0, 0), s.fit.cov(0, 1)}, {s.fit.cov(1, 0), s.fit.cov(1, 1)}}}}}};
 }
 
-void runLines(const LinesOptions& o) {
+void runLines(const LinesOptions& o, const CLI::App& app) {
   requireDistinctOutputs({{"--png", o.png}, {"--svg", o.svg}, {"--steps", o.steps}});
   requireExtension("--png", o.png, {".png"}, "a PNG picture");
   requireExtension("--svg", o.svg, {".svg"}, "an SVG picture");
-  const ScanLog log = readLog(o);
+  // Options that would change nothing in this run are refused (issue 24, class 6).
+  refuseIgnored(app, "--purge", o.min_points > 0 || o.min_length > 0.0,
+                "with --min-points 0 and --min-length 0: nothing is purged");
+  const bool sigmas_used = o.chi2 > 0.0 || o.format == "json";
+  for (const char* option : {"--range-sigma", "--bearing-sigma-deg"}) {
+    refuseIgnored(app, option, sigmas_used,
+                  "without --chi2 or --format json: the noise model shapes the chi-square split "
+                  "test and the fits' covariances, which only JSON prints");
+  }
+  const ScanLog log = readLog(o, app);
   const std::size_t n_scans = log.scans.size();
   if (!o.all && static_cast<std::size_t>(o.scan) >= n_scans) {
     throw std::invalid_argument("--scan " + std::to_string(o.scan) + " is out of range: " + o.file +
@@ -223,7 +241,7 @@ void addLinesCommand(CLI::App& app) {
       ->check(kFinitePositive)
       ->capture_default_str();
   sub->add_option("--angle-threshold-deg", o->angle_deg, "a_th: merge angle, degrees (0: no merge)")
-      ->check(kFiniteNonNegative & CLI::Range(0.0, 180.0))
+      ->check(finiteIn(0.0, 180.0))
       ->capture_default_str();
   sub->add_option("--min-points", o->min_points, "Purge segments with fewer points (0: off)")
       ->check(kCount)
@@ -244,7 +262,7 @@ void addLinesCommand(CLI::App& app) {
       ->check(kFiniteNonNegative)
       ->capture_default_str();
   sub->add_option("--bearing-sigma-deg", o->bearing_sigma_deg, "Bearing noise, degrees")
-      ->check(kFiniteNonNegative & CLI::Range(0.0, 180.0))
+      ->check(finiteIn(0.0, 180.0))
       ->capture_default_str();
   addFormatOption(*sub, o->format, {"table", "csv", "json"});
   sub->add_option("--svg", o->svg, "Draw the scan and its segments (not with --all)")
@@ -253,7 +271,7 @@ void addLinesCommand(CLI::App& app) {
       ->excludes("--all");
   sub->add_option("--steps", o->steps, "Write one SVG per split/merge/purge step to DIR")
       ->excludes("--all");
-  sub->callback([o] { runLines(*o); });
+  sub->callback([o, sub] { runLines(*o, *sub); });
 }
 
 }  // namespace metricmap::cli

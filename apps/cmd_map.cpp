@@ -129,7 +129,7 @@ void addMapCommand(CLI::App& app) {
       ->check(kFinitePositiveFloat)
       ->capture_default_str();
   sub->add_option("--min-hits", o->min_hits, "Points that make a cell occupied")
-      ->check(CLI::Range(1u, 1000000u))
+      ->check(countIn(1, 1000000))
       ->capture_default_str();
   sub->add_option("--min-height", o->min_height, "Lowest point mapped, along up (m)")
       ->check(kFinite);

@@ -24,6 +24,7 @@
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/input_file.h"
+#include "metricmap/io/map_server.h"
 #include "metricmap/io/output_set.h"
 #include "metricmap/occupancy/occupancy_export.h"
 #include "metricmap/occupancy/octomap_io.h"
@@ -45,7 +46,7 @@ struct OccupancyOptions {
   std::string pcd_format = "binary";
   double resolution = kUnset, max_range = kUnset;
   bool resolution_given = false, max_range_given = false, distributed = false;
-  bool sequence_given = false, world_given = false;
+  bool sequence_given = false, world_given = false, pcd_format_given = false;
 };
 
 bool endsWith(const std::string& s, const std::string& suffix) {
@@ -69,15 +70,8 @@ std::pair<double, double> parseBand(const std::string& text) {
   }
 }
 
-/// The map_server files of --out-map: M.pgm -> M.pgm, M.yaml (as writeTrinaryMapServer).
-std::string yamlOf(const std::string& pgm) {
-  return pgm.substr(0, pgm.find_last_of('.')) + ".yaml";
-}
-
-std::string baseName(const std::string& path) {
-  const std::size_t slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
+/// The YAML of --out-map's map_server pair: M.pgm -> M.yaml.
+std::string yamlOf(const std::string& pgm) { return mapServerFiles(pgm).yaml; }
 
 /// What the exports of a .bt/.ot input build per expanded voxel, checked with the map against
 /// the budget before the tree is expanded (a 30-byte tree can stand for 2^27 voxels).
@@ -176,6 +170,10 @@ void refuseIgnoredOptions(const OccupancyOptions& o, bool from_file, bool kitti)
   }
   if (!o.band.empty() && o.out_map.empty())
     throw UsageError("--band is the height band of --out-map: give --out-map too");
+  if (o.pcd_format_given && o.out_cloud.empty())
+    throw UsageError(
+        "--pcd-format has no effect without --out-cloud: it is the encoding of the "
+        "PCD written there");
 }
 
 void run(const OccupancyOptions& o, const Ranks& ranks) {
@@ -247,9 +245,12 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
   if (!o.out_cloud.empty())
     savePcdAtomic(outputs.stage(o.out_cloud), occupiedCenters(map), parsePcdFormat(o.pcd_format));
   if (!o.out_map.empty()) {
-    const std::string pgm = outputs.stage(o.out_map), yaml = outputs.stage(yamlOf(o.out_map));
-    const std::string preview = o.map_preview.empty() ? "" : outputs.stage(o.map_preview);
-    writeTrinaryMapServer(trinary, pgm, yaml, preview, baseName(o.out_map));
+    MapServerFiles files = mapServerFiles(o.out_map);
+    files.pgm = outputs.stage(files.pgm);
+    files.yaml = outputs.stage(files.yaml);
+    files.preview_png = o.map_preview.empty() ? "" : outputs.stage(o.map_preview);
+    files.heat_png.clear();
+    writeMapServer(mapServerImage(trinary), files);
   }
   tot.write_s = secondsSince(t);
 
@@ -331,6 +332,7 @@ void addOccupancyCommand(CLI::App& app) {
     opts.max_range_given = sub->count("--max-range") > 0;
     opts.sequence_given = sub->count("--sequence") > 0;
     opts.world_given = sub->count("--world") > 0;
+    opts.pcd_format_given = sub->count("--pcd-format") > 0;
     const bool from_file = opts.inputs.size() == 1 &&
                            (endsWith(opts.inputs[0], ".bt") || endsWith(opts.inputs[0], ".ot"));
     if (opts.distributed && from_file)

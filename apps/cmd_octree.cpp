@@ -24,10 +24,12 @@ struct OctreeOptions {
   std::string out, leaves, format = "table", pcd_format = "binary";
 };
 
-void runOctree(const OctreeOptions& o) {
+void runOctree(const OctreeOptions& o, const CLI::App& app) {
   requireDistinctFiles({{"input", o.file}}, {{"--out", o.out}, {"--leaves", o.leaves}});
   requireExtension("--out", o.out, {".pcd"}, "a PCD cloud");
   requireExtension("--leaves", o.leaves, {".csv"}, "CSV");
+  refuseIgnored(app, "--pcd-format", !o.out.empty(),
+                "without --out: it is the encoding of the PCD written there");
   const LoadedCloud loaded = loadTimed(o.file);
   const auto& cloud = loaded.cloud;
 
@@ -88,7 +90,7 @@ void addOctreeCommand(CLI::App& app) {
       ->check(kOutputFile);
   addFormatOption(*sub, o->format, {"table", "csv", "json"});
   addPcdFormatOption(*sub, o->pcd_format);
-  sub->callback([o] { runOctree(*o); });
+  sub->callback([o, sub] { runOctree(*o, *sub); });
 }
 
 }  // namespace metricmap::cli

@@ -166,7 +166,7 @@ void addOdometryCommand(CLI::App& app) {
   sub->add_option("--threads", o->threads,
                   "Threads for the scan-to-map pairing (0: all hardware threads); the poses do "
                   "not depend on it")
-      ->check(CLI::Range(0u, 1024u))
+      ->check(countIn(0, 1024))
       ->capture_default_str();
   addFormatOption(*sub, o->format, {"table", "json"});
   sub->callback([o] {

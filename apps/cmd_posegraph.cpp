@@ -86,7 +86,7 @@ void addPoseGraphCommand(CLI::App& app) {
       ->required();
   sub->add_option("--out", o->out, "The optimised graph as a g2o file")->check(kOutputFile);
   sub->add_option("--max-iterations", o->max_iterations, "Levenberg-Marquardt iterations")
-      ->check(CLI::Range(1, 100000))
+      ->check(countIn(1, 100000))
       ->capture_default_str();
   sub->add_option("--threads", o->threads, "Ceres' threads")
       ->check(countIn(1, 256))

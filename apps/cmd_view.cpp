@@ -91,7 +91,39 @@ void addOctomap(const std::string& f, bool with_free, viz::ViewRequest& request)
     for (const auto& c : voxelCenters(map, false)) request.free.centers.push_back(c);
 }
 
-void run(const ViewOptions& o) {
+/// Options that would have no effect on this view are refused, never dropped (issue 24, class 6).
+void refuseIgnoredOptions(const ViewOptions& o, const CLI::App& app) {
+  refuseIgnored(app, "--max-points", o.octree,
+                "without --octree: it is the octree's split threshold");
+  refuseIgnored(app, "--min-cell-size", o.octree,
+                "without --octree: it is the smallest octree node that may split");
+  refuseIgnored(app, "--show-empty", o.octree, "without --octree: it draws empty octree leaves");
+  refuseIgnored(app, "--cell-size", o.grid, "without --grid: it is the edge of the grid's cells");
+  bool maps = false, logs = false, only_logs = true;
+  for (const std::string& f : o.files) {
+    const bool map = isOctomapFile(f);
+    // a scan log is only told apart by reading it: only when an option depends on it
+    const bool log =
+        !map && (app.count("--scan") > 0 || app.count("--color-by") > 0) && isScanLog(f, o);
+    maps = maps || map;
+    logs = logs || log;
+    only_logs = only_logs && log;
+  }
+  refuseIgnored(app, "--free", maps,
+                "without an OctoMap file (.bt, .ot): it draws the map's free voxels");
+  refuseIgnored(app, "--camera", o.segments.empty() || o.camera == "top",
+                "with --segments: segments are drawn seen from above (top)");
+  refuseIgnored(app, "--scan", logs || !o.segments.empty(),
+                "without a scan log or --segments: it picks one scan of a log");
+  if (app.count("--color-by") > 0 && o.color_by == "height" && only_logs) {
+    throw UsageError(
+        "--color-by height has no effect on scan logs alone: a 2D scan lies at z = 0 (its "
+        "points are drawn grey)");
+  }
+}
+
+void run(const ViewOptions& o, const CLI::App& app) {
+  refuseIgnoredOptions(o, app);
   int width = 0, height = 0;
   const std::size_t x = o.window_size.find('x');
   try {
@@ -237,7 +269,7 @@ void addViewCommand(CLI::App& app) {
   sub->add_option("--camera", o->camera, "Initial view")
       ->check(CLI::IsMember({"top", "side", "iso"}))
       ->capture_default_str();
-  sub->callback([o] { run(*o); });
+  sub->callback([o, sub] { run(*o, *sub); });
 }
 
 }  // namespace metricmap::cli

@@ -1,9 +1,12 @@
 // metricmap: metric maps from range data. One binary, one subcommand per job.
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <new>
 #include <string>
+#include <thread>
 
 #include <pcl/console/print.h>
 #include <CLI/CLI.hpp>
@@ -13,6 +16,38 @@
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/common/parse_number.h"
 #include "metricmap/version.h"
+
+namespace {
+
+/// This process's rank when mpirun started it (Open MPI, PMIx and MPICH set these before main,
+/// before MPI_Init), -1 otherwise.
+int launcherRank() {
+  for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"}) {
+    const char* v = std::getenv(name);
+    if (v != nullptr && *v != '\0') return std::atoi(v);
+  }
+  return -1;
+}
+
+/// A usage error: one line on stderr, exit 2. Under mpirun every rank parses the same command
+/// line and finds the same error: rank 0 prints it, once and before mpirun's report of the
+/// failed job (the other ranks wait, silent, until mpirun ends them as rank 0 exits).
+int usageLine(const std::string& line) {
+  const int rank = launcherRank();
+  if (rank > 0) {
+    std::this_thread::sleep_for(std::chrono::seconds(2));
+    return 2;
+  }
+  std::cerr << line << std::endl;
+  if (rank == 0) std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  return 2;
+}
+
+int usageError(const std::string& what) {
+  return usageLine("metricmap: usage: " + what + " (see --help)");
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   // A closed stdout must not become the first output file's descriptor.
@@ -48,6 +83,7 @@ int main(int argc, char** argv) {
   metricmap::cli::addViewCommand(app);
   metricmap::cli::addOccupancyCommand(app);
   metricmap::cli::addEvaluateCommand(app);
+  metricmap::cli::addPoseGraphCommand(app);
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
     std::string names;  // from the registered commands, in registration order
@@ -56,9 +92,8 @@ int main(int argc, char** argv) {
       names += (names.empty() ? "" : ", ") + sub->get_name();
     }
     if (!known) {
-      std::cerr << "metricmap: usage: unknown subcommand '" << argv[1] << "' (" << names
-                << "; see --help)\n";
-      return 2;
+      return usageLine("metricmap: usage: unknown subcommand '" + std::string(argv[1]) + "' (" +
+                       names + "; see --help)");
     }
   }
   try {
@@ -70,11 +105,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "metricmap: usage: " << e.what() << " (see --help)\n";
-    return 2;
+    return usageError(e.what());
   } catch (const metricmap::cli::UsageError& e) {
-    std::cerr << "metricmap: usage: " << e.what() << " (see --help)\n";
-    return 2;
+    return usageError(e.what());
   } catch (const std::bad_alloc&) {
     // Large allocations are checked against the budget with a message naming their option or
     // input; one that slipped through still names what was asked: the command line.

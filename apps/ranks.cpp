@@ -39,9 +39,10 @@ void Ranks::run(const std::function<void()>& work) const {
   try {
     work();
   } catch (const CLI::Error& e) {
-    distributed::MpiSession::abort(std::string("usage: ") + e.what(), 2);
+    // every rank finds a usage error alike: rank 0 says it once, as one process would
+    mpi_->abortOnce(std::string("metricmap: usage: ") + e.what() + " (see --help)", 2);
   } catch (const UsageError& e) {
-    distributed::MpiSession::abort(std::string("usage: ") + e.what(), 2);
+    mpi_->abortOnce(std::string("metricmap: usage: ") + e.what() + " (see --help)", 2);
   } catch (const std::bad_alloc&) {
     distributed::MpiSession::abort("out of memory (rank " + std::to_string(rank()) + ")");
   } catch (const std::exception& e) {
@@ -63,6 +64,9 @@ void Ranks::sum(std::vector<std::uint64_t>& values) const {
 void Ranks::max(std::vector<double>& values) const {
   if (mpi_) distributed::maxToRoot(values);
 }
+void Ranks::minAll(std::vector<double>& values) const {
+  if (mpi_) distributed::minToAll(values);
+}
 #else
 bool distributedBuilt() { return false; }
 
@@ -82,6 +86,7 @@ LogOddsMap Ranks::reduce(LogOddsMap local) const { return local; }
 GridSummary Ranks::reduceSummary(const GridAccumulator& local) const { return local.summary(); }
 void Ranks::sum(std::vector<std::uint64_t>&) const {}
 void Ranks::max(std::vector<double>&) const {}
+void Ranks::minAll(std::vector<double>&) const {}
 #endif
 
 Ranks::~Ranks() = default;

@@ -49,6 +49,8 @@ class Ranks {
   GridSummary reduceSummary(const GridAccumulator& local) const;
   void sum(std::vector<std::uint64_t>& values) const;
   void max(std::vector<double>& values) const;
+  /// \brief Element-wise minimum over the ranks, on every rank (identity in one process).
+  void minAll(std::vector<double>& values) const;
 
  private:
   std::unique_ptr<distributed::MpiSession> mpi_;

@@ -10,12 +10,20 @@
 
 namespace metricmap {
 
-/// \brief Shortest round-trip `%g` text of `value` ("nan", "inf" and "-inf" as such).
+/// \brief Shortest round-trip `%g` text of `value` ("nan", "inf" and "-inf" as such); whole
+/// numbers below 1e16 in plain digits (`90`, `100000`, not `9e+01`, `1e+05`).
 inline std::string formatNumber(double value) {
   char buf[40];
-  for (int digits = 1; digits <= 17; ++digits) {
+  int digits = 1;
+  for (; digits <= 17; ++digits) {
     std::snprintf(buf, sizeof buf, "%.*g", digits, value);
     if (std::strtod(buf, nullptr) == value) break;
+  }
+  const double magnitude = value < 0 ? -value : value;
+  if (magnitude >= 10 && magnitude < 1e16) {  // enough digits for %g to write it plainly
+    int whole = 1;
+    for (double m = magnitude; m >= 10; m /= 10) ++whole;
+    std::snprintf(buf, sizeof buf, "%.*g", whole > digits ? whole : digits, value);
   }
   return buf;
 }

@@ -121,4 +121,11 @@ void maxToRoot(std::vector<double>& values) {
   if (rank == 0) values = out;
 }
 
+void minToAll(std::vector<double>& values) {
+  std::vector<double> out(values.size());
+  MPI_Allreduce(values.data(), out.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MIN,
+                MPI_COMM_WORLD);
+  values = out;
+}
+
 }  // namespace metricmap::distributed

@@ -41,5 +41,8 @@ void minToRoot(std::vector<std::int64_t>& values);
 void maxToRoot(std::vector<std::int64_t>& values);
 /// \brief Element-wise maximum over the ranks, result on rank 0.
 void maxToRoot(std::vector<double>& values);
+/// \brief Element-wise minimum over the ranks, result on every rank (MPI_Allreduce): e.g. the
+/// per-axis minimum of the whole input, which a cloud-minimum grid needs before any rank bins.
+void minToAll(std::vector<double>& values);
 
 }  // namespace metricmap::distributed

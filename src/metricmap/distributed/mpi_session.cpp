@@ -2,6 +2,7 @@
 
 #include <mpi.h>
 
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <new>
@@ -45,11 +46,25 @@ void MpiSession::runOrAbort(const std::function<void()>& work) const {
 }
 
 void MpiSession::abort(const std::string& message, int code) {
+  abortWithLine("metricmap: error: " + message, code);
+}
+
+void MpiSession::abortWithLine(const std::string& line, int code) {
   std::cout.flush();
-  std::cerr << "metricmap: error: " << message << std::endl;
-  std::fflush(stderr);
+  if (!line.empty()) {
+    std::cerr << line << std::endl;
+    std::fflush(stderr);
+    // mpirun forwards a rank's stderr and handles its abort on separate paths: without this
+    // pause its banner about MPI_ABORT may come first and bury the one useful line.
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  }
   MPI_Abort(MPI_COMM_WORLD, code);
   std::_Exit(code);  // MPI_Abort does not return; in case it does
+}
+
+void MpiSession::abortOnce(const std::string& line, int code) const {
+  if (rank_ != 0) std::this_thread::sleep_for(std::chrono::seconds(2));
+  abortWithLine(rank_ == 0 ? line : std::string(), code);
 }
 
 std::pair<std::size_t, std::size_t> shareOf(std::size_t n, int rank, int ranks) {

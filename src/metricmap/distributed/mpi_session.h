@@ -34,6 +34,17 @@ class MpiSession {
   /// \brief Print "metricmap: error: <message>" on stderr and MPI_Abort(MPI_COMM_WORLD, code).
   [[noreturn]] static void abort(const std::string& message, int code = 1);
 
+  /// \brief Print `line` (when not empty) on stderr, flushed, give mpirun a moment to forward
+  /// it, then MPI_Abort(MPI_COMM_WORLD, code): the failing rank's line comes first, before
+  /// mpirun's own report of the abort.
+  [[noreturn]] static void abortWithLine(const std::string& line, int code);
+
+  /// \brief For an error every rank finds alike (a usage error: the same command line): rank 0
+  /// prints `line` and aborts the job with `code`; the other ranks print nothing and wait for
+  /// that abort (aborting themselves, silently, should rank 0 not have failed within 2 s).
+  /// The line is printed once, not once per rank.
+  [[noreturn]] void abortOnce(const std::string& line, int code) const;
+
  private:
   int rank_ = 0, size_ = 1, local_size_ = 1;
 };

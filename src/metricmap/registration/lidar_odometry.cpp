@@ -1,6 +1,9 @@
 #include "metricmap/registration/lidar_odometry.h"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 
 #include "metricmap/common/format_number.h"
@@ -46,6 +49,13 @@ const LidarOdometryConfig& validated(const LidarOdometryConfig& c) {
                                 std::to_string(c.max_iterations));
   }
   return c;
+}
+
+/// A size in a message: plain decimals where they are short (`100`, not formatNumber's `1e+02`).
+std::string decimal(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return std::strtod(buf, nullptr) == v && std::strchr(buf, 'e') == nullptr ? buf : formatNumber(v);
 }
 
 PointToPointIcpParams icpParams(const LidarOdometryConfig& c, double threshold,
@@ -178,6 +188,15 @@ OdometryResult LidarOdometry::registerScan(const Scan& points, const std::vector
     const PointToPointIcpResult icp =
         alignWithRecovery(source, map_, initial, coarse ? nullptr : &last, res.threshold,
                           config_.max_threshold, config_.convergence, res.restarted);
+    if (icp.correspondences < kMinOdometryPairs) {
+      throw InputError(
+          label + ": the registration paired " + std::to_string(icp.correspondences) + " of its " +
+          std::to_string(source.size()) + " downsampled points with the local map, at least " +
+          std::to_string(kMinOdometryPairs) + " needed (" + std::to_string(counts.in_range) +
+          " points in range, voxel size " + decimal(config_.voxel_size) +
+          " m): the pose would rest on too few points; a smaller voxel size keeps "
+          "more");
+    }
     res.pose = icp.pose;
     res.correspondences = icp.correspondences;
     res.iterations = icp.iterations;

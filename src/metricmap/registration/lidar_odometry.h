@@ -41,6 +41,12 @@ struct OdometryResult {
   int coarse_iterations = 0;  ///< Gauss-Newton steps of the coarse stage
 };
 
+/// \brief Fewest point pairs (source points with a map point within the threshold) a registered
+/// frame's pose may rest on. Fewer (a voxel as large as the range window leaves a handful of
+/// points: 8 points and 5 pairs at a 100 m voxel on KITTI) and the frame is refused, naming it,
+/// rather than given a pose fitted to a few stray points.
+constexpr std::size_t kMinOdometryPairs = 20;
+
 /// \brief Scans in, poses out. Give the scans in acquisition order, each in its sensor frame;
 /// the first scan's sensor frame is the world. Not thread-safe; one object per sequence.
 class LidarOdometry {
@@ -53,7 +59,8 @@ class LidarOdometry {
   /// \param times per-point sweep times in [0, 1] (fractions of the frame period), used by
   /// deskew; empty when the sensor gives none
   /// \param name how errors name this scan (default: "frame N", N counted from 0)
-  /// \throws InputError naming the scan when it is empty, has no finite point or none in range
+  /// \throws InputError naming the scan when it is empty, has no finite point or none in range,
+  /// or (a frame after the first) when its registration found fewer than kMinOdometryPairs pairs
   /// \throws std::invalid_argument when deskew is on and `times` does not match `points`
   OdometryResult registerFrame(const std::vector<Eigen::Vector3d>& points,
                                const std::vector<double>& times = {}, const std::string& name = {});

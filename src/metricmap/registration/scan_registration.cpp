@@ -1,11 +1,14 @@
 #include "metricmap/registration/scan_registration.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include <pcl/registration/gicp.h>
 #include <pcl/registration/icp.h>
 
+#include "metricmap/common/format_number.h"
+#include "metricmap/exceptions.h"
 #include "metricmap/grid/occupancy_grid.h"
 
 namespace metricmap {
@@ -42,10 +45,32 @@ RefineResult run(Registration& reg, const pcl::PointCloud<pcl::PointXYZ>::ConstP
     r.fitness = reg.getFitnessScore(dist);
   }
   r.scan_to_world.matrix() = guess.cast<double>();
+  // The pairs of the pose found: `aligned` is the scan at it; the target's tree is built.
+  const double fine = p.max_correspondence / 4;
+  const auto tree = reg.getSearchMethodTarget();
+  pcl::Indices index(1);
+  std::vector<float> sq(1);
+  for (const pcl::PointXYZ& q : aligned) {
+    if (tree->nearestKSearch(q, 1, index, sq) > 0 && sq[0] <= fine * fine) ++r.correspondences;
+  }
+  const std::size_t need = minRefinePairs(scan->size());
+  if (r.correspondences < need) {
+    throw InputError("registration paired " + std::to_string(r.correspondences) +
+                     " of the scan's " + std::to_string(scan->size()) +
+                     " registration points with the target within " + formatNumber(fine) +
+                     " m, at least " + std::to_string(need) +
+                     " needed (20, and a tenth of the points): the pose cannot be trusted (the "
+                     "scan overlaps the target too little, or its initial pose is too far off)");
+  }
   return r;
 }
 
 }  // namespace
+
+std::size_t minRefinePairs(std::size_t scan_points) {
+  constexpr std::size_t kMinPairs = 20;
+  return std::max(kMinPairs, (scan_points + 9) / 10);
+}
 
 RefineMethod parseRefineMethod(const std::string& name) {
   if (name == "icp") return RefineMethod::Icp;

@@ -3,6 +3,7 @@
 /// \brief Refining a scan's pose against a map with pcl::IterativeClosestPoint or
 /// pcl::GeneralizedIterativeClosestPoint; pose perturbation and pose errors for experiments.
 
+#include <cstddef>
 #include <random>
 #include <string>
 
@@ -27,7 +28,15 @@ struct RefineResult {
   Eigen::Isometry3d scan_to_world = Eigen::Isometry3d::Identity();
   bool converged = false;
   double fitness = 0.0;  ///< PCL's mean squared distance of the last correspondences
+  /// Scan points with a target point within the fine stage's distance (a quarter of
+  /// max_correspondence) at the pose found: the pairs the pose rests on.
+  std::size_t correspondences = 0;
 };
+
+/// \brief Fewest pairs a refined pose must rest on: 20, and a tenth of the scan's registration
+/// points. Fewer, and PCL returns the starting pose (no pair at all) or a pose fitted to a few
+/// stray points, with nothing to tell it from a registration: refineScanPose refuses it.
+std::size_t minRefinePairs(std::size_t scan_points);
 
 /// \brief The part of a velodyne scan (its own frame, z up) that registration uses: points
 /// 3-40 m away and above the ground (z > -1.3 m; the HDL-64E sits 1.73 m up), averaged in
@@ -37,6 +46,9 @@ pcl::PointCloud<pcl::PointXYZ>::Ptr registrationCloud(const pcl::PointCloud<pcl:
                                                       float voxel = 0.2f);
 
 /// \brief Align `scan` (its own frame) to `target` (world), starting from `initial`.
+/// \throws InputError when the pose found rests on fewer than minRefinePairs(scan->size())
+/// pairs (the scan overlaps the target too little, or starts too far from it): never a
+/// silent starting pose or a pose fitted to a handful of points
 RefineResult refineScanPose(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& scan,
                             const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& target,
                             const Eigen::Isometry3d& initial, const RefineParams& params);
