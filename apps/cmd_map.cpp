@@ -126,7 +126,7 @@ void addMapCommand(CLI::App& app) {
       ->check(kOutputFile);
   addPcdFormatOption(*sub, o->pcd_format);
   sub->add_option("--map-resolution", o->resolution, "Map cell (m)")
-      ->check(kFinitePositiveFloat)
+      ->check(kCellEdge)
       ->capture_default_str();
   sub->add_option("--min-hits", o->min_hits, "Points that make a cell occupied")
       ->check(countIn(1, 1000000))
@@ -135,7 +135,7 @@ void addMapCommand(CLI::App& app) {
       ->check(kFinite);
   sub->add_option("--max-height", o->max_height, "Highest point mapped (m)")->check(kFinite);
   sub->add_option("--voxel", o->voxel, "Average the global cloud in cells of this size (m)")
-      ->check(kFiniteNonNegative);
+      ->check(finiteIn(0, 1000));
   addOccupancy2DOptions(*sub, o->grid);
   addFormatOption(*sub, o->format, {"table", "json"});
   sub->callback([o, sub] {
@@ -152,6 +152,7 @@ void addMapCommand(CLI::App& app) {
                                  "give --out-map, --out-occupancy-2d and/or --out-cloud");
     }
     checkOccupancy2DOptions(*sub, o->grid);
+    refuseIgnored(*sub, "--pcd-format", !o->out_cloud.empty(), "without --out-cloud");
     checkRangeOptions(o->ranges);
     checkSourceOptions(o->source);
     RolePaths outputs = {{"--out-cloud", o->out_cloud}};

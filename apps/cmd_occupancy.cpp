@@ -5,6 +5,7 @@
 // and the voxels are merged over MPI (ranks.h); rank 0 writes the outputs.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -29,8 +30,10 @@
 #include "metricmap/occupancy/occupancy_export.h"
 #include "metricmap/occupancy/octomap_io.h"
 #include "metricmap/occupancy/scan_casting.h"
+#include "metricmap/sequence/sequence_mapper.h"
 #include "octomap_quiet.h"
 #include "ranks.h"
+#include "sequence_options.h"
 #include "table.h"
 
 namespace metricmap::cli {
@@ -56,6 +59,16 @@ bool endsWith(const std::string& s, const std::string& suffix) {
 
 bool isDirectory(const std::string& path) {
   return access((path + "/sequences").c_str(), F_OK) == 0;
+}
+
+/// A scan source other than a KITTI root: a folder of scans (with poses.txt), a .txt list, a
+/// CARMEN log. Its scans are cast at the source's reference poses.
+bool isScanSource(const std::vector<std::string>& inputs) {
+  if (inputs.size() != 1 || isDirectory(inputs[0])) return false;
+  std::error_code ec;
+  const std::string& p = inputs[0];
+  return std::filesystem::is_directory(p, ec) || endsWith(p, ".txt") || endsWith(p, ".clf") ||
+         endsWith(p, ".log") || endsWith(p, ".gz") || endsWith(p, ".bz2");
 }
 
 /// "zmin,zmax" -> two finite numbers, zmin <= zmax (the checked parser: no hex, inf, nan).
@@ -119,6 +132,15 @@ void castScans(const OccupancyOptions& o, const Ranks& ranks, LogOddsMap& map, T
     const KittiWorld world = o.world == "camera" ? KittiWorld::Camera : KittiWorld::Velodyne;
     castKittiFrames(map, KittiSequence{o.inputs[0], o.sequence}, frames, first, last, world, tot,
                     report);
+  } else if (isScanSource(o.inputs)) {
+    SourceOptions so;
+    so.path = o.inputs[0];
+    so.frames = o.frames;
+    const std::unique_ptr<ScanSource> source = openSource(so);
+    const std::vector<std::size_t> frames = selectedFrames(so, *source);
+    const std::vector<Eigen::Isometry3d> poses = referenceSensorPoses(*source, frames);
+    const auto [first, last] = ranks.share(frames.size());
+    castSourceFrames(map, *source, frames, poses, first, last, tot, report);
   } else {
     const auto [first, last] = ranks.share(o.inputs.size());
     castPcdScans(map, o.inputs, first, last, tot, report);
@@ -148,7 +170,7 @@ void reduceTotals(const Ranks& ranks, Totals& tot) {
 /// Options that do not apply to the inputs given are refused, never ignored (issue 24, class 6):
 /// a .bt/.ot map is exported as it is (no scan options); PCD scans carry their own pose (no KITTI
 /// options); --band only shapes --out-map.
-void refuseIgnoredOptions(const OccupancyOptions& o, bool from_file, bool kitti) {
+void refuseIgnoredOptions(const OccupancyOptions& o, bool from_file, bool kitti, bool source) {
   const std::vector<std::pair<const char*, bool>> scan_options = {
       {"--resolution", o.resolution_given},
       {"--max-range", o.max_range_given},
@@ -162,7 +184,11 @@ void refuseIgnoredOptions(const OccupancyOptions& o, bool from_file, bool kitti)
       throw UsageError(name + ": '" + quoteForMessage(o.inputs[0]) +
                        "' is a map, exported as it is: scan options do not apply to it");
     }
-    if (!kitti && (name == "--frames" || name == "--sequence" || name == "--world")) {
+    if (source && (name == "--sequence" || name == "--world")) {
+      throw UsageError(name + " selects KITTI scans: '" + quoteForMessage(o.inputs[0]) +
+                       "' is a scan source cast at its reference poses");
+    }
+    if (!kitti && !source && (name == "--frames" || name == "--sequence" || name == "--world")) {
       throw UsageError(name +
                        " selects KITTI scans: the inputs are PCD files (each one's pose is "
                        "its VIEWPOINT)");
@@ -179,8 +205,9 @@ void refuseIgnoredOptions(const OccupancyOptions& o, bool from_file, bool kitti)
 void run(const OccupancyOptions& o, const Ranks& ranks) {
   const bool from_file =
       o.inputs.size() == 1 && (endsWith(o.inputs[0], ".bt") || endsWith(o.inputs[0], ".ot"));
-  refuseIgnoredOptions(o, from_file,
-                       !from_file && o.inputs.size() == 1 && isDirectory(o.inputs[0]));
+  const bool source = !from_file && isScanSource(o.inputs);
+  refuseIgnoredOptions(o, from_file, !from_file && o.inputs.size() == 1 && isDirectory(o.inputs[0]),
+                       source);
   if (!o.out_map.empty() && o.band.empty())
     throw CLI::ValidationError("band", "--out-map needs --band zmin,zmax");
   if (!o.out_map.empty() && o.world == "camera")
@@ -191,6 +218,11 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
   RolePaths inputs = withRole("input", o.inputs);
   if (!from_file && o.inputs.size() == 1 && isDirectory(o.inputs[0]) && !o.frames.empty()) {
     inputs = kittiInputs(o.inputs[0], o.sequence, parseFramesOption(o.frames), true);
+  }
+  if (source) {
+    SourceOptions so;
+    so.path = o.inputs[0];
+    inputs = sourceInputs(so);
   }
   requireDistinctFiles(inputs,
                        {{"--out", o.out_bt},
@@ -300,15 +332,16 @@ void addOccupancyCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "occupancy", "Ray-cast scans into a log-odds voxel map; OctoMap .bt/.ot, 2D trinary map");
   sub->add_option("input", o->inputs,
-                  "A KITTI root (with --frames), PCD files (VIEWPOINT = sensor pose), or one "
-                  ".bt/.ot map to export")
+                  "A KITTI root (with --frames), a scan source cast at its reference poses (a "
+                  "folder of scans with poses.txt, a .txt list, a CARMEN log; --frames "
+                  "optional), PCD files (VIEWPOINT = sensor pose), or one .bt/.ot map to export")
       ->required();
   sub->add_option("--resolution", o->resolution, "Voxel edge (m), 0.0001 to 1000")
       ->check(kCellEdge);
   sub->add_option("--max-range", o->max_range, "Beams are cut here and mark no hit (m), > 0")
       ->check(kFinitePositive);
   sub->add_option("--sequence", o->sequence, "KITTI sequence")->capture_default_str();
-  sub->add_option("--frames", o->frames, "KITTI frames, e.g. 0-5,15");
+  sub->add_option("--frames", o->frames, "KITTI or scan source frames, e.g. 0-5,15");
   sub->add_option("--world", o->world, "KITTI world: velodyne (z up) or camera (y down)")
       ->check(CLI::IsMember({"camera", "velodyne"}))
       ->capture_default_str();

@@ -169,7 +169,8 @@ void addOdometryCommand(CLI::App& app) {
       ->check(countIn(0, 1024))
       ->capture_default_str();
   addFormatOption(*sub, o->format, {"table", "json"});
-  sub->callback([o] {
+  sub->callback([o, sub] {
+    refuseIgnored(*sub, "--pose-format", !o->out_poses.empty(), "without --out-poses");
     if (o->deskew_azimuth && o->no_deskew) {
       throw CLI::ValidationError("--deskew", "cannot be given with --no-deskew");
     }

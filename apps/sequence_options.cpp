@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "metricmap/common/format_number.h"
+#include "metricmap/datasets/folder_source.h"
 #include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/exceptions.h"
 
@@ -51,9 +52,21 @@ RolePaths sourceInputs(const SourceOptions& o) {
   if (!std::filesystem::is_directory(o.path, ec)) in.push_back({"source", o.path});
   if (!o.reference.empty()) in.push_back({"--reference", o.reference});
   if (!o.times.empty()) in.push_back({"--times", o.times});
+  // The scans themselves: a folder's or a list's, or the KITTI sequence's velodyne/ ...
+  const std::filesystem::path d(o.path);
+  const std::filesystem::path velodyne = d / "sequences" / o.sequence / "velodyne";
+  if (std::filesystem::is_directory(velodyne, ec)) {
+    for (const auto& e : std::filesystem::directory_iterator(velodyne, ec)) {
+      if (e.is_regular_file(ec)) in.push_back({"scan", e.path().string()});
+    }
+  } else if (std::filesystem::is_directory(d, ec) || d.extension() == ".txt") {
+    try {
+      for (const std::string& p : folderScanPaths(o.path)) in.push_back({"scan", p});
+    } catch (const InputError&) {  // an unreadable folder or list is reported when opened
+    }
+  }
   if (std::filesystem::is_directory(o.path, ec)) {
-    // The files a folder or KITTI source reads beside its scans.
-    const std::filesystem::path d(o.path);
+    // ... and the files the source reads beside them.
     for (const auto& p :
          {d / "poses.txt", d / "times.txt", d / "poses" / (o.sequence + ".txt"),
           d / "sequences" / o.sequence / "times.txt", d / "sequences" / o.sequence / "calib.txt"}) {

@@ -1,7 +1,7 @@
 // libFuzzer target for the sequence layer's file readers: any bytes as a trajectory (KITTI or
-// TUM rows), a stamps file, a relations file, a .npy point array and a scan file with per-point
-// time fields must either read or raise InputError / CapacityError, never crash, hang or
-// allocate without bound.
+// TUM rows), a stamps file, a relations file, a g2o pose graph, a .npy point array and a scan
+// file with per-point time fields must either read or raise InputError / CapacityError, never
+// crash, hang or allocate without bound.
 #include <cstdint>
 #include <fstream>
 #include <string>
@@ -16,6 +16,7 @@
 #include "metricmap/io/scan_file.h"
 #include "metricmap/io/trajectory.h"
 #include "metricmap/io/trajectory_relations.h"
+#include "metricmap/posegraph/g2o_io.h"
 
 namespace {
 
@@ -52,6 +53,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     tolerate([&] { metricmap::readTrajectoryFile(path); });
     tolerate([&] { metricmap::readStamps(path); });
     tolerate([&] { metricmap::readRelations(path); });
+    tolerate([&] { metricmap::readG2o(path); });
   }
   ::unlink(path.c_str());
   return 0;

@@ -96,12 +96,21 @@ std::vector<std::string> readList(const std::string& list) {
   return paths;
 }
 
+}  // namespace
+
+std::vector<std::string> folderScanPaths(const std::string& path) {
+  std::error_code ec;
+  return fs::is_directory(path, ec) ? listFolder(path) : readList(path);
+}
+
+namespace {
+
 class FolderSource : public ScanSource {
  public:
   FolderSource(const std::string& path, const ScanSourceOptions& o) {
     std::error_code ec;
     const bool dir = fs::is_directory(path, ec);
-    files_ = dir ? listFolder(path) : readList(path);
+    files_ = folderScanPaths(path);
     if (files_.empty()) {
       throw InputError(path + (dir ? ": no .pcd, .ply, .bin or .npy scan in this folder"
                                    : ": the list names no scan"));
