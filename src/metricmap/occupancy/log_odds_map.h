@@ -12,9 +12,9 @@
 #include <pcl/point_cloud.h>
 #include <Eigen/Core>
 
+#include "metricmap/detail/voxel_key.h"
 #include "metricmap/occupancy/block_table.h"
 #include "metricmap/occupancy/log_odds_params.h"
-#include "metricmap/detail/voxel_key.h"
 
 namespace metricmap {
 

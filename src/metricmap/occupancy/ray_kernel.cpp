@@ -18,8 +18,8 @@
 
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/detail/fast_floor.h"
-#include "metricmap/exceptions.h"
 #include "metricmap/detail/voxel_key.h"
+#include "metricmap/exceptions.h"
 
 namespace metricmap::detail {
 
