@@ -20,5 +20,6 @@ void addViewCommand(CLI::App& app);
 void addOccupancyCommand(CLI::App& app);
 void addEvaluateCommand(CLI::App& app);
 void addPoseGraphCommand(CLI::App& app);
+void addSlam2DCommand(CLI::App& app);
 
 }  // namespace metricmap::cli

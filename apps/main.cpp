@@ -84,6 +84,7 @@ int main(int argc, char** argv) {
   metricmap::cli::addOccupancyCommand(app);
   metricmap::cli::addEvaluateCommand(app);
   metricmap::cli::addPoseGraphCommand(app);
+  metricmap::cli::addSlam2DCommand(app);
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
     std::string names;  // from the registered commands, in registration order

@@ -26,17 +26,11 @@
 #include <string_view>
 #include <vector>
 
+#include "metricmap/common/pose_2d.h"
 #include "metricmap/io/laser_scan.h"
 #include "metricmap/io/text_stream.h"
 
 namespace metricmap {
-
-/// \brief A planar pose: metres, metres, radians.
-struct Pose2D {
-  double x = 0.0;
-  double y = 0.0;
-  double theta = 0.0;
-};
 
 /// \brief One laser message of a CARMEN log.
 struct CarmenLaser {

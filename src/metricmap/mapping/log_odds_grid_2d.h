@@ -47,6 +47,15 @@ class LogOddsGrid2D {
   CellState state(std::int64_t i, std::int64_t j) const;
   float logOdds(std::int64_t i, std::int64_t j) const;
 
+  /// \brief The dense storage: cells (i, j) for i in [minI(), minI() + width()) and j in
+  /// [minJ(), minJ() + height()), row by row at data()[(j - minJ()) width() + (i - minI())],
+  /// log-odds, NaN where unknown. Valid until the next insertScan.
+  std::int64_t minI() const { return i0_; }
+  std::int64_t minJ() const { return j0_; }
+  std::int64_t width() const { return w_; }
+  std::int64_t height() const { return h_; }
+  const float* data() const { return cells_.data(); }
+
   /// \brief Calls f(i, j, log_odds) for every known cell, row by row (j, then i, ascending).
   template <typename F>
   void forEachKnown(F&& f) const {

@@ -22,14 +22,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace metricmap {
+#include "metricmap/common/pose_2d.h"
 
-/// \brief A pose in SE(2): position (x, y) and heading theta (radians).
-struct Pose2D {
-  double x = 0.0;
-  double y = 0.0;
-  double theta = 0.0;
-};
+namespace metricmap {
 
 /// \brief A pose in SE(3): translation and rotation as a (near-)unit quaternion.
 struct Pose3D {

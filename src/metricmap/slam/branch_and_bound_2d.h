@@ -1,0 +1,70 @@
+#pragma once
+/// \file branch_and_bound_2d.h
+/// \brief Exact multi-resolution correlative matching of a scan against a finished submap
+/// (Olson, "Real-time correlative scan matching", ICRA 2009; the branch-and-bound of Hess et
+/// al., "Real-time loop closure in 2D LIDAR SLAM", ICRA 2016): level d holds, for every cell,
+/// the largest probability over the 2^d x 2^d cells above and to the right of it, so that a
+/// candidate's score at level d bounds the score of every pose it covers; the search finds the
+/// pose of best nearest-cell score in the window exactly, visiting few candidates.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "metricmap/slam/match_grid.h"
+#include "metricmap/slam/scan_matcher_2d.h"
+
+namespace metricmap {
+
+/// \brief The precomputed levels of one submap, and the search over them.
+/// Probabilities are held as bytes (round(255 p)): scores are exact in those units.
+class BranchAndBoundMatcher2D {
+ public:
+  /// \brief Levels 0..depth-1 of `grid` (1 <= depth <= 16).
+  /// \throws CapacityError when they do not fit in the memory budget
+  BranchAndBoundMatcher2D(const MatchGrid& grid, int depth);
+
+  /// \brief The best pose initial + (dx, dy, dθ), |dx|, |dy| <= linear_window (whole cells),
+  /// |dθ| <= angular_window in steps of angularSearchStep, if its score (mean probability in
+  /// byte units / 255) reaches min_score; the search prunes every branch whose bound is below the
+  /// best found so far.
+  std::optional<ScanMatch2D> match(const std::vector<Eigen::Vector2f>& points,
+                                   const Pose2D& initial, double linear_window,
+                                   double angular_window, double min_score) const;
+
+  /// \brief Candidates whose score was computed in the last match (for the report).
+  std::size_t lastCandidates() const { return candidates_; }
+  std::size_t bytes() const;
+
+ private:
+  struct Level {
+    int pad = 0;  ///< 2^d - 1: the level covers base cells [-pad, w) x [-pad, h)
+    std::int64_t w = 0, h = 0;
+    std::vector<std::uint8_t> cells;
+    std::uint8_t at(std::int64_t i, std::int64_t j, std::uint8_t outside) const {
+      i += pad;
+      j += pad;
+      if (i < 0 || j < 0 || i >= w || j >= h) return outside;
+      return cells[static_cast<std::size_t>(j * w + i)];
+    }
+  };
+  struct Candidate {
+    int angle = 0, dx = 0, dy = 0;
+    long score = 0;
+  };
+  long score(const Level& level, const std::vector<std::int64_t>& ci,
+             const std::vector<std::int64_t>& cj, int dx, int dy) const;
+  void search(const std::vector<std::vector<std::int64_t>>& ci,
+              const std::vector<std::vector<std::int64_t>>& cj, std::vector<Candidate>& todo,
+              int depth, int window, Candidate& best) const;
+
+  std::vector<Level> levels_;
+  std::int64_t i0_ = 0, j0_ = 0;
+  double res_ = 0.0;
+  std::uint8_t outside_ = 0;
+  mutable std::size_t candidates_ = 0;
+};
+
+}  // namespace metricmap

@@ -1,0 +1,445 @@
+#include "metricmap/slam/slam_2d.h"
+
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <stdexcept>
+#include <unordered_set>
+
+#include "metricmap/posegraph/optimize.h"
+#include "metricmap/slam/branch_and_bound_2d.h"
+#include "metricmap/slam/match_grid.h"
+#include "metricmap/slam/scan_matcher_2d.h"
+
+namespace metricmap {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+Eigen::Vector2f apply(const Pose2D& pose, const Eigen::Vector2f& p) {
+  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
+  return {static_cast<float>(pose.x + c * p.x() - s * p.y()),
+          static_cast<float>(pose.y + s * p.x() + c * p.y())};
+}
+
+/// One point per square of `edge` (the first of each), in scan order.
+std::vector<Eigen::Vector2f> voxelFilter(const std::vector<Eigen::Vector2f>& points, double edge) {
+  std::vector<Eigen::Vector2f> kept;
+  std::unordered_set<std::int64_t> seen;
+  seen.reserve(points.size() * 2);
+  for (const Eigen::Vector2f& p : points) {
+    const auto i = static_cast<std::int64_t>(std::floor(p.x() / edge));
+    const auto j = static_cast<std::int64_t>(std::floor(p.y() / edge));
+    if (seen.insert(i * 73856093 ^ j * 19349663).second) kept.push_back(p);
+  }
+  return kept;
+}
+
+PoseGraph2D::Information informationOf(double sigma_m, double sigma_deg) {
+  PoseGraph2D::Information info = PoseGraph2D::Information::Zero();
+  const double sr = sigma_deg * kPi / 180.0;
+  info(0, 0) = info(1, 1) = 1.0 / (sigma_m * sigma_m);
+  info(2, 2) = 1.0 / (sr * sr);
+  return info;
+}
+
+LogOddsParams submapParams(const Slam2DConfig& c) {
+  LogOddsParams p;
+  p.resolution = c.resolution;
+  p.prob_hit = c.prob_hit;
+  p.prob_miss = c.prob_miss;
+  p.max_range = c.max_range;
+  return p;
+}
+
+}  // namespace
+
+void validateSlam2DConfig(const Slam2DConfig& c) {
+  auto need = [](bool ok, const char* what) {
+    if (!ok) throw std::invalid_argument(what);
+  };
+  need(std::isfinite(c.min_range) && c.min_range >= 0, "min_range must be finite and >= 0");
+  need(std::isfinite(c.max_range) && c.max_range > c.min_range,
+       "max_range must be finite and greater than min_range");
+  need(std::isfinite(c.voxel_filter) && c.voxel_filter > 0, "voxel_filter must be > 0");
+  need(std::isfinite(c.resolution) && c.resolution > 0, "resolution must be > 0");
+  need(c.scans_per_submap >= 1, "scans_per_submap must be >= 1");
+  need(c.prob_hit > 0.5 && c.prob_hit < 1, "prob_hit must be in (0.5, 1)");
+  need(c.prob_miss > 0 && c.prob_miss < 0.5, "prob_miss must be in (0, 0.5)");
+  need(std::isfinite(c.node_min_distance) && c.node_min_distance >= 0,
+       "node_min_distance must be >= 0");
+  need(std::isfinite(c.node_min_angle_deg) && c.node_min_angle_deg >= 0,
+       "node_min_angle_deg must be >= 0");
+  need(c.node_max_time > 0, "node_max_time must be > 0");
+  need(std::isfinite(c.local_linear_window) && c.local_linear_window >= 0 &&
+           c.local_linear_window <= 10,
+       "local_linear_window must be in [0, 10] m");
+  need(std::isfinite(c.local_angular_window_deg) && c.local_angular_window_deg >= 0 &&
+           c.local_angular_window_deg <= 180,
+       "local_angular_window_deg must be in [0, 180]");
+  need(std::isfinite(c.translation_weight) && c.translation_weight >= 0,
+       "translation_weight must be >= 0");
+  need(std::isfinite(c.rotation_weight) && c.rotation_weight >= 0, "rotation_weight must be >= 0");
+  need(c.refine_iterations >= 1 && c.refine_iterations <= 1000,
+       "refine_iterations must be in 1..1000");
+  need(std::isfinite(c.loop_linear_window) && c.loop_linear_window > 0 &&
+           c.loop_linear_window <= 100,
+       "loop_linear_window must be in (0, 100] m");
+  need(std::isfinite(c.loop_angular_window_deg) && c.loop_angular_window_deg > 0 &&
+           c.loop_angular_window_deg <= 180,
+       "loop_angular_window_deg must be in (0, 180]");
+  need(c.loop_min_score > 0 && c.loop_min_score < 1, "loop_min_score must be in (0, 1)");
+  need(c.loop_max_distance >= 0 && !std::isnan(c.loop_max_distance),
+       "loop_max_distance must be >= 0");
+  need(c.loop_every_n_nodes >= 1, "loop_every_n_nodes must be >= 1");
+  need(c.loop_min_overlap >= 0 && c.loop_min_overlap <= 1, "loop_min_overlap must be in [0, 1]");
+  need(c.loop_max_chi2 > 0, "loop_max_chi2 must be > 0");
+  need(c.branch_and_bound_depth >= 1 && c.branch_and_bound_depth <= 16,
+       "branch_and_bound_depth must be in 1..16");
+  need(std::isfinite(c.edge_translation_sigma) && c.edge_translation_sigma > 0,
+       "edge_translation_sigma must be > 0");
+  need(std::isfinite(c.edge_rotation_sigma_deg) && c.edge_rotation_sigma_deg > 0,
+       "edge_rotation_sigma_deg must be > 0");
+  need(std::isfinite(c.loop_translation_sigma) && c.loop_translation_sigma > 0,
+       "loop_translation_sigma must be > 0");
+  need(std::isfinite(c.loop_rotation_sigma_deg) && c.loop_rotation_sigma_deg > 0,
+       "loop_rotation_sigma_deg must be > 0");
+  need(c.wide_every_n_nodes >= 1, "wide_every_n_nodes must be >= 1");
+  need(std::isfinite(c.wide_linear_window) && c.wide_linear_window > 0 &&
+           c.wide_linear_window <= 100,
+       "wide_linear_window must be in (0, 100] m");
+  need(std::isfinite(c.wide_angular_window_deg) && c.wide_angular_window_deg > 0 &&
+           c.wide_angular_window_deg <= 180,
+       "wide_angular_window_deg must be in (0, 180]");
+  need(c.optimize_every_n_nodes >= 1, "optimize_every_n_nodes must be >= 1");
+  need(c.optimize_iterations >= 1, "optimize_iterations must be >= 1");
+  need(c.final_iterations >= 1, "final_iterations must be >= 1");
+  validateLogOddsParams(c.map);
+}
+
+struct Slam2D::Impl {
+  struct Submap {
+    std::unique_ptr<LogOddsGrid2D> grid;
+    std::size_t anchor = 0;  ///< first node
+    std::size_t last_node = 0;
+    std::size_t nodes = 0;
+    Eigen::Vector2d centre_local = Eigen::Vector2d::Zero();  ///< mean node position, local
+    std::unique_ptr<BranchAndBoundMatcher2D> matcher;        ///< when finished
+  };
+  struct Node {
+    std::size_t scan = 0;
+    Pose2D local;
+    std::vector<Eigen::Vector2f> ends;    ///< base frame, every beam with a range
+    std::vector<Eigen::Vector2f> points;  ///< base frame, filtered, for matching
+  };
+
+  Slam2DConfig config;
+  Pose2D sensor;
+  ProbabilityTable table;
+  PoseGraph2D graph;
+  PoseGraph2D::Information information, loop_information;
+  std::vector<Node> nodes;
+  std::vector<Submap> submaps;
+  std::deque<std::size_t> active;       ///< submap indices, oldest first (at most 2)
+  std::vector<Pose2D> local;            ///< per scan
+  std::vector<std::size_t> scan_node;   ///< per scan: the last node at or before it
+  std::vector<std::size_t> node_scans;  ///< per node
+  std::vector<LoopClosure2D> loops;
+  std::optional<Pose2D> last_odometry;
+  double last_node_stamp = 0.0;
+  std::size_t nodes_at_last_optimization = 0;
+  bool loops_since_optimization = false;
+  Pose2D correction;  ///< global <- local, from the last optimisation
+  std::unique_ptr<LogOddsGrid2D> map;
+  bool finished = false;
+  bool final_round = false;
+  Slam2DStats stats;
+
+  Impl(const Slam2DConfig& c, const Pose2D& s) : config(c), sensor(s), table(submapParams(c)) {
+    information = informationOf(c.edge_translation_sigma, c.edge_rotation_sigma_deg);
+    loop_information = informationOf(c.loop_translation_sigma, c.loop_rotation_sigma_deg);
+  }
+
+  Pose2D globalOf(std::size_t node) const { return graph.vertex(node).pose; }
+
+  /// The share of `points` at `pose` that fall on observed cells of `grid`.
+  static double overlap(const LogOddsGrid2D& grid, const std::vector<Eigen::Vector2f>& points,
+                        const Pose2D& pose) {
+    if (points.empty()) return 0.0;
+    const double inv = 1.0 / grid.params().resolution;
+    std::size_t known = 0;
+    for (const Eigen::Vector2f& p : points) {
+      const Eigen::Vector2f w = apply(pose, p);
+      const auto i = static_cast<std::int64_t>(std::floor(w.x() * inv));
+      const auto j = static_cast<std::int64_t>(std::floor(w.y() * inv));
+      if (grid.state(i, j) != CellState::Unknown) ++known;
+    }
+    return static_cast<double>(known) / static_cast<double>(points.size());
+  }
+
+  /// The graph without the loop edges whose chi² exceeds loop_max_chi2.
+  void removeLoopOutliers() {
+    std::vector<bool> drop(graph.edgeCount(), false);
+    bool any = false;
+    for (const LoopClosure2D& l : loops)
+      if (graph.edgeChi2(l.edge) > config.loop_max_chi2) drop[l.edge] = any = true;
+    if (!any) return;
+    PoseGraph2D kept;
+    for (const auto& v : graph.vertices()) kept.addVertex(v.id, v.pose);
+    std::vector<std::size_t> new_index(graph.edgeCount());
+    for (std::size_t e = 0; e < graph.edgeCount(); ++e) {
+      if (drop[e]) continue;
+      const auto& edge = graph.edge(e);
+      new_index[e] =
+          kept.addEdge(edge.from, edge.to, edge.measurement, edge.information, edge.loop);
+    }
+    std::vector<LoopClosure2D> still;
+    for (LoopClosure2D l : loops) {
+      if (drop[l.edge]) {
+        stats.loops_rejected++;
+        continue;
+      }
+      l.edge = new_index[l.edge];
+      still.push_back(l);
+    }
+    loops.swap(still);
+    graph = std::move(kept);
+  }
+
+  void optimizeGraph(int iterations) {
+    const auto t0 = Clock::now();
+    PoseGraphOptimizeOptions o;
+    o.max_iterations = iterations;
+    o.loop_loss = RobustLoss::Huber;
+    o.loss_scale = std::sqrt(config.loop_max_chi2);
+    PoseGraphOptimizeResult r = optimize(graph, o);
+    const std::size_t before = loops.size();
+    if (final_round) removeLoopOutliers();
+    if (loops.size() != before) r = optimize(graph, o);
+    stats.optimizations++;
+    stats.final_chi2_initial = r.initial_chi2;
+    stats.final_chi2 = r.final_chi2;
+    stats.final_iterations = r.iterations;
+    const std::size_t last = nodes.size() - 1;
+    correction = compose(globalOf(last), inverse(nodes[last].local));
+    nodes_at_last_optimization = nodes.size();
+    loops_since_optimization = false;
+    stats.optimize_seconds += since(t0);
+  }
+
+  void searchLoops(std::size_t n, bool near, bool wide) {
+    const auto t0 = Clock::now();
+    const Node& node = nodes[n];
+    const Pose2D g = globalOf(n);
+    for (std::size_t s = 0; s < submaps.size(); ++s) {
+      Submap& sub = submaps[s];
+      if (!sub.matcher) continue;
+      // Submaps the local chain has just left need no loop edge: it is accurate there.
+      if (sub.last_node + config.loop_min_node_gap > n) continue;
+      const bool old = sub.last_node + config.wide_min_node_gap <= n;
+      if (!(near || (wide && old))) continue;
+      const bool use_wide = wide && old;
+      const Pose2D ga = globalOf(sub.anchor), la = nodes[sub.anchor].local;
+      const Pose2D local_to_global = compose(ga, inverse(la));
+      const Eigen::Vector2f c = apply(local_to_global, sub.centre_local.cast<float>());
+      if (std::hypot(c.x() - g.x, c.y() - g.y) > config.loop_max_distance) continue;
+      const Pose2D initial = compose(inverse(local_to_global), g);  // in the submap's frame
+      if (!use_wide && overlap(*sub.grid, node.points, initial) < config.loop_min_overlap) continue;
+      stats.loop_searches++;
+      const std::optional<ScanMatch2D> m = sub.matcher->match(
+          node.points, initial, use_wide ? config.wide_linear_window : config.loop_linear_window,
+          (use_wide ? config.wide_angular_window_deg : config.loop_angular_window_deg) * kPi /
+              180.0,
+          config.loop_min_score);
+      stats.loop_candidates += sub.matcher->lastCandidates();
+      if (!m) continue;
+      const MatchGrid grid(*sub.grid, table);
+      const ScanMatch2D refined =
+          refinePose(grid, node.points, m->pose, m->pose, config.translation_weight,
+                     config.rotation_weight, config.refine_iterations);
+      if (refined.score < config.loop_min_score) continue;
+      const std::size_t e =
+          graph.addEdge(sub.anchor, n, compose(inverse(la), refined.pose), loop_information, true);
+      loops.push_back({n, s, sub.anchor, refined.score, e});
+      stats.loops_found++;
+      loops_since_optimization = true;
+    }
+    stats.loop_seconds += since(t0);
+  }
+
+  void insertNode(std::size_t n) {
+    const auto t0 = Clock::now();
+    const Node& node = nodes[n];
+    if (active.empty() || submaps[active.back()].nodes >= config.scans_per_submap) {
+      Submap s;
+      s.grid = std::make_unique<LogOddsGrid2D>(submapParams(config));
+      s.anchor = n;
+      submaps.push_back(std::move(s));
+      active.push_back(submaps.size() - 1);
+      stats.submaps++;
+    }
+    std::vector<Eigen::Vector2f> ends;
+    ends.reserve(node.ends.size());
+    for (const Eigen::Vector2f& e : node.ends) ends.push_back(apply(node.local, e));
+    const Eigen::Vector2f origin = apply(
+        node.local, Eigen::Vector2f(static_cast<float>(sensor.x), static_cast<float>(sensor.y)));
+    for (std::size_t s : active) {
+      Submap& sub = submaps[s];
+      sub.grid->insertScan(origin, ends);
+      sub.centre_local = (sub.centre_local * static_cast<double>(sub.nodes) +
+                          Eigen::Vector2d(node.local.x, node.local.y)) /
+                         static_cast<double>(sub.nodes + 1);
+      sub.nodes++;
+      sub.last_node = n;
+    }
+    if (submaps[active.front()].nodes >= 2 * config.scans_per_submap) {
+      Submap& done = submaps[active.front()];
+      done.matcher = std::make_unique<BranchAndBoundMatcher2D>(MatchGrid(*done.grid, table),
+                                                               config.branch_and_bound_depth);
+      active.pop_front();
+      stats.finished_submaps++;
+    }
+    stats.insert_seconds += since(t0);
+  }
+};
+
+Slam2D::Slam2D(const Slam2DConfig& config, const Pose2D& sensor_to_base) {
+  validateSlam2DConfig(config);
+  if (!std::isfinite(sensor_to_base.x) || !std::isfinite(sensor_to_base.y) ||
+      !std::isfinite(sensor_to_base.theta))
+    throw std::invalid_argument("the sensor's pose on the robot is not finite");
+  impl_ = std::make_unique<Impl>(config, sensor_to_base);
+}
+
+Slam2D::~Slam2D() = default;
+
+void Slam2D::addScan(const LaserScan& scan, const std::optional<Pose2D>& odometry, double stamp) {
+  Impl& d = *impl_;
+  if (d.finished) throw std::logic_error("Slam2D: addScan after finish");
+  if (scan.angles.size() != scan.ranges.size())
+    throw std::invalid_argument("scan has " + std::to_string(scan.angles.size()) + " angles but " +
+                                std::to_string(scan.ranges.size()) + " ranges");
+  if (odometry &&
+      !(std::isfinite(odometry->x) && std::isfinite(odometry->y) && std::isfinite(odometry->theta)))
+    throw std::invalid_argument("odometry pose is not finite");
+  const auto t0 = Clock::now();
+  const Slam2DConfig& c = d.config;
+  Impl::Node node;
+  node.scan = d.local.size();
+  for (std::size_t k = 0; k < scan.ranges.size(); ++k) {
+    const double r = scan.ranges[k];
+    double a = scan.angles[k];
+    // Beyond max_range: no return (a logged maximum reading) or too uncertain to place.
+    if (!(r >= c.min_range && r <= c.max_range) || !std::isfinite(a)) continue;
+    const Eigen::Vector2f p = apply(d.sensor, Eigen::Vector2f(static_cast<float>(r * std::cos(a)),
+                                                              static_cast<float>(r * std::sin(a))));
+    node.ends.push_back(p);
+  }
+  node.points = voxelFilter(node.ends, c.voxel_filter);
+
+  // Prediction: the odometry's motion since the last scan (or none).
+  Pose2D predicted;
+  if (d.local.empty()) {
+    predicted = odometry ? *odometry : Pose2D{};
+  } else {
+    predicted = d.local.back();
+    if (odometry && d.last_odometry)
+      predicted = compose(predicted, compose(inverse(*d.last_odometry), *odometry));
+  }
+  if (odometry) d.last_odometry = odometry;
+
+  Pose2D pose = predicted;
+  if (!d.active.empty() && !node.points.empty()) {
+    const MatchGrid grid(*d.submaps[d.active.front()].grid, d.table);
+    const double step = angularSearchStep(c.resolution, node.points);
+    const ScanMatch2D coarse =
+        correlativeSearch(grid, node.points, predicted, c.local_linear_window,
+                          c.local_angular_window_deg * kPi / 180.0, step);
+    pose = refinePose(grid, node.points, coarse.pose, coarse.pose, c.translation_weight,
+                      c.rotation_weight, c.refine_iterations)
+               .pose;
+  }
+  d.local.push_back(pose);
+  d.stats.scans++;
+  d.stats.local_seconds += since(t0);
+
+  // Motion filter.
+  bool is_node = d.nodes.empty();
+  if (!is_node) {
+    const Pose2D& last = d.nodes.back().local;
+    const double moved = std::hypot(pose.x - last.x, pose.y - last.y);
+    const double turned = std::fabs(std::remainder(pose.theta - last.theta, 2 * kPi));
+    is_node = moved >= c.node_min_distance || turned >= c.node_min_angle_deg * kPi / 180.0 ||
+              std::fabs(stamp - d.last_node_stamp) >= c.node_max_time;
+  }
+  if (!is_node) {
+    d.scan_node.push_back(d.nodes.size() - 1);
+    return;
+  }
+  node.local = pose;
+  d.last_node_stamp = stamp;
+  const std::size_t n = d.nodes.size();
+  d.nodes.push_back(std::move(node));
+  d.node_scans.push_back(d.nodes[n].scan);
+  d.scan_node.push_back(n);
+  d.stats.nodes++;
+  d.graph.addVertex(static_cast<std::int64_t>(n), compose(d.correction, pose));
+  if (n > 0) d.graph.addEdge(n - 1, n, compose(inverse(d.nodes[n - 1].local), pose), d.information);
+  d.insertNode(n);
+  const bool near = n % c.loop_every_n_nodes == 0, wide = n % c.wide_every_n_nodes == 0;
+  if (near || wide) d.searchLoops(n, near, wide);
+  if (d.loops_since_optimization &&
+      d.nodes.size() - d.nodes_at_last_optimization >= c.optimize_every_n_nodes)
+    d.optimizeGraph(c.optimize_iterations);
+}
+
+void Slam2D::finish() {
+  Impl& d = *impl_;
+  if (d.finished) return;
+  d.finished = true;
+  if (d.nodes.empty()) throw std::invalid_argument("no scan was added");
+  d.final_round = true;
+  if (!d.loops.empty()) d.optimizeGraph(d.config.final_iterations);
+  const auto t0 = Clock::now();
+  d.map = std::make_unique<LogOddsGrid2D>(d.config.map);
+  std::vector<Eigen::Vector2f> ends;
+  for (std::size_t n = 0; n < d.nodes.size(); ++n) {
+    const Pose2D g = d.globalOf(n);
+    ends.clear();
+    for (const Eigen::Vector2f& e : d.nodes[n].ends) ends.push_back(apply(g, e));
+    d.map->insertScan(
+        apply(g, Eigen::Vector2f(static_cast<float>(d.sensor.x), static_cast<float>(d.sensor.y))),
+        ends);
+  }
+  d.stats.map_seconds += since(t0);
+}
+
+std::vector<Pose2D> Slam2D::trajectory() const {
+  const Impl& d = *impl_;
+  std::vector<Pose2D> out;
+  out.reserve(d.local.size());
+  for (std::size_t j = 0; j < d.local.size(); ++j) {
+    const std::size_t n = d.scan_node[j];
+    const Pose2D g = d.globalOf(n);
+    out.push_back(compose(compose(g, inverse(d.nodes[n].local)), d.local[j]));
+  }
+  return out;
+}
+
+const PoseGraph2D& Slam2D::graph() const { return impl_->graph; }
+const std::vector<std::size_t>& Slam2D::nodeScans() const { return impl_->node_scans; }
+const std::vector<LoopClosure2D>& Slam2D::loops() const { return impl_->loops; }
+const Slam2DStats& Slam2D::stats() const { return impl_->stats; }
+const Slam2DConfig& Slam2D::config() const { return impl_->config; }
+
+const LogOddsGrid2D& Slam2D::map() const {
+  if (!impl_->map) throw std::logic_error("Slam2D: map before finish");
+  return *impl_->map;
+}
+
+}  // namespace metricmap
