@@ -1,8 +1,10 @@
 #include "cli_common.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -15,9 +17,11 @@
 #include "metricmap/common/format_number.h"
 #include "metricmap/common/parse_number.h"
 #include "metricmap/datasets/kitti_sequence.h"
+#include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/file_identity.h"
+#include "metricmap/mapping/occupancy_map_2d.h"
 #include "metricmap/occupancy/octomap_file_check.h"
 #include "table.h"
 
@@ -244,6 +248,28 @@ void requireDistinctFiles(const RolePaths& inputs, const RolePaths& outputs) {
   throw UsageError(message);
 }
 
+void requireDistinctInputs(const RolePaths& inputs) {
+  const auto repeated = findRepeatedInput(inputs);
+  if (!repeated) return;
+  const auto& [first, second] = *repeated;
+  std::string message = second.first + " '" + quotePath(second.second) + "' ";
+  message += first.second == second.second ? std::string("is given twice")
+                                           : "and the " + first.first + " '" +
+                                                 quotePath(first.second) + "' are the same file";
+  throw UsageError(message + ": it would be read and counted twice");
+}
+
+void requireOccupiedCells(const MapImage& image, std::uint32_t min_hits,
+                          const std::string& out_map) {
+  if (out_map.empty() || image.width == 0) return;  // an empty band is reported by the caller
+  std::uint32_t most = 0;
+  for (const std::uint32_t h : image.hits) most = std::max(most, h);
+  if (most >= min_hits) return;
+  throw InputError("--out-map '" + quotePath(out_map) + "': no cell has --min-hits " +
+                   std::to_string(min_hits) + " points (the fullest has " + std::to_string(most) +
+                   "): the map would be empty");
+}
+
 void requireDistinctOutputs(const RolePaths& outputs) { requireDistinctFiles({}, outputs); }
 
 RolePaths withRole(const std::string& role, const std::vector<std::string>& paths) {
@@ -314,8 +340,72 @@ void emitTable(const Table& table, const std::string& format, OutputSet& outputs
 
 namespace {
 
+/// Under an MPI launcher the process's standard output is a pipe or terminal to the launcher,
+/// which forwards what it reads and ignores its own write errors: a report written there always
+/// "succeeds", even when the launcher's standard output is /dev/full or closed. When the launcher
+/// (mpirun, mpiexec, orterun, prterun) is the parent on this host, as Open MPI starts local ranks,
+/// the report goes to the launcher's own standard output instead (/proc/PPID/fd/1, appended), so
+/// that the one rule holds: the report is printed and checked before outputs are committed.
+/// -1: not under a launcher we can reach (print as usual); -2: the launcher's stdout is closed.
+int launcherStdout() {
+  if (std::getenv("OMPI_COMM_WORLD_SIZE") == nullptr && std::getenv("PMI_SIZE") == nullptr &&
+      std::getenv("PMIX_RANK") == nullptr)
+    return -1;
+  const pid_t parent = ::getppid();
+  char path[64];
+  std::snprintf(path, sizeof path, "/proc/%d/comm", static_cast<int>(parent));
+  std::FILE* comm = std::fopen(path, "re");
+  if (comm == nullptr) return -1;
+  char name[32] = {};
+  const bool read = std::fgets(name, sizeof name, comm) != nullptr;
+  std::fclose(comm);
+  if (!read) return -1;
+  name[std::strcspn(name, "\n")] = '\0';
+  const std::string launcher = name;
+  if (launcher != "mpirun" && launcher != "mpiexec" && launcher != "orterun" &&
+      launcher != "prterun")
+    return -1;
+  // The launcher's descriptor 1 must be the standard output it inherited: open for writing and
+  // not close-on-exec. When the user closed it (`>&-`), the launcher reuses descriptor 1 for one
+  // of its own pipes (read-only, close-on-exec): never write there, that stdout is closed.
+  std::snprintf(path, sizeof path, "/proc/%d/fdinfo/1", static_cast<int>(parent));
+  std::FILE* info = std::fopen(path, "re");
+  if (info == nullptr) return errno == ENOENT ? -2 : -1;
+  long flags = -1;
+  for (char row[128]; std::fgets(row, sizeof row, info) != nullptr;) {
+    if (std::strncmp(row, "flags:", 6) == 0) flags = std::strtol(row + 6, nullptr, 8);
+  }
+  std::fclose(info);
+  if (flags < 0) return -1;
+  if ((flags & O_ACCMODE) == O_RDONLY || (flags & O_CLOEXEC) != 0) return -2;
+  std::snprintf(path, sizeof path, "/proc/%d/fd/1", static_cast<int>(parent));
+  struct stat st {};
+  if (::lstat(path, &st) != 0) return errno == ENOENT ? -2 : -1;
+  const int fd = ::open(path, O_WRONLY | O_APPEND | O_CLOEXEC | O_NOCTTY);
+  return fd >= 0 ? fd : -1;
+}
+
 void printChecked(const std::string& text) {
   if (text.empty()) return;
+  const int launcher = launcherStdout();
+  if (launcher == -2) throw std::runtime_error("cannot write to standard output");
+  if (launcher >= 0) {
+    std::size_t done = 0;
+    bool ok = true;
+    while (ok && done < text.size()) {
+      const ssize_t n = ::write(launcher, text.data() + done, text.size() - done);
+      if (n > 0) {
+        done += static_cast<std::size_t>(n);
+      } else if (n < 0 && errno == EINTR) {
+        continue;
+      } else {
+        ok = false;
+      }
+    }
+    ok = ::close(launcher) == 0 && ok;
+    if (!ok) throw std::runtime_error("cannot write to standard output");
+    return;
+  }
   std::cout << text << std::flush;
   if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout) != 0)
     throw std::runtime_error("cannot write to standard output");

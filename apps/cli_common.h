@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -15,6 +16,10 @@
 
 #include "metricmap/io/load_report.h"
 #include "metricmap/io/output_set.h"
+
+namespace metricmap {
+struct MapImage;
+}
 
 namespace metricmap::cli {
 
@@ -91,6 +96,15 @@ void requireDistinctFiles(const RolePaths& inputs, const RolePaths& outputs);
 /// `format` names that format in the message. An empty path passes.
 void requireExtension(const std::string& option, const std::string& path,
                       const std::vector<std::string>& extensions, const std::string& format);
+
+/// \brief Two inputs naming one file however spelled (`a.pcd ./a.pcd`, a link) would be read
+/// and counted twice: a usage error naming both spellings (exit 2).
+void requireDistinctInputs(const RolePaths& inputs);
+
+/// \brief A map_server map (--out-map) with no occupied cell would be written as a blank picture:
+/// an InputError (exit 1) naming the option, --min-hits and the most hits a cell got.
+void requireOccupiedCells(const MapImage& image, std::uint32_t min_hits,
+                          const std::string& out_map);
 
 /// \brief requireDistinctFiles with no inputs (two outputs naming one file).
 void requireDistinctOutputs(const RolePaths& outputs);

@@ -151,6 +151,7 @@ void plot(const std::vector<Record>& records, const CompareOptions& o, const std
 }
 
 void runCompare(const CompareOptions& o) {
+  requireDistinctInputs(withRole("input", o.files));
   requireDistinctFiles(withRole("input", o.files), {{"--out", o.out}, {"--plot", o.plot}});
   if (o.format == "csv") {
     requireExtension("--out", o.out, {".csv"}, "CSV, as --format csv");
@@ -181,7 +182,19 @@ void runCompare(const CompareOptions& o) {
   const std::string table = render(records, o);
   OutputSet outputs;
   if (!o.out.empty()) writeTextAtomic(outputs.stage(o.out), table);
-  if (!o.plot.empty()) plot(records, o, outputs.stage(o.plot));
+  if (!o.plot.empty()) {
+    const std::string staged = outputs.stage(o.plot);
+    try {
+      plot(records, o, staged);
+    } catch (const std::runtime_error& e) {
+      // the drawing module names the path it was given: show the destination, never the
+      // temporary it is staged as
+      std::string what = e.what();
+      for (std::size_t at; (at = what.find(staged)) != std::string::npos;)
+        what.replace(at, staged.size(), o.plot);
+      throw std::runtime_error(what);
+    }
+  }
   emit(o.out.empty() ? table : std::string(), outputs);  // the report first, then the files
 }
 
@@ -191,7 +204,7 @@ void addCompareCommand(CLI::App& app) {
   auto o = std::make_shared<CompareOptions>();
   CLI::App* sub = app.add_subcommand(
       "compare", "Grid vs octree statistics over files x configurations (the study's table)");
-  sub->add_option("files", o->files, "Point clouds (.pcd, .ply, .bin)")->required();
+  sub->add_option("files", o->files, "Point clouds (.pcd, .ply, .bin, .npy)")->required();
   sub->add_option("--config", o->configs,
                   "cell_size=S,min_cell_size=M,max_points=N; repeatable. "
                   "Default: the study's 1/1/100, 0.5/0.5/100, 2/1/200")

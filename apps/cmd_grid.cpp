@@ -215,6 +215,7 @@ GridOutcome buildRanks(const GridOptions& o, const Ranks& ranks) {
 }
 
 void runGrid(const GridOptions& o, const CLI::App& app) {
+  requireDistinctInputs(withRole("input", o.files));
   requireDistinctFiles(withRole("input", o.files), {{"--out", o.out}, {"--cells", o.cells}});
   requireExtension("--out", o.out, {".pcd"}, "a PCD cloud");
   requireExtension("--cells", o.cells, {".csv"}, "CSV");
@@ -232,7 +233,8 @@ void runGrid(const GridOptions& o, const CLI::App& app) {
 void addGridCommand(CLI::App& app) {
   auto o = std::make_shared<GridOptions>();
   CLI::App* sub = app.add_subcommand("grid", "Occupancy grid: cell counts and means");
-  sub->add_option("file", o->files, "Point clouds (.pcd, .ply, .bin): one input, concatenated")
+  sub->add_option("file", o->files,
+                  "Point clouds (.pcd, .ply, .bin, .npy): one input, concatenated")
       ->required();
   sub->add_option("--cell-size", o->cell_size, "Cell edge in metres")
       ->required()

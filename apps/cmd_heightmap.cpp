@@ -158,6 +158,7 @@ void run(const HeightMapOptions& o, const CLI::App& app) {
   }
   {
     RolePaths inputs = withRole("depth image", o.depths);
+    requireDistinctInputs(inputs);
     inputs.emplace_back("--camera file", o.camera.camera_file);
     inputs.emplace_back("--trajectory file", o.trajectory);
     RolePaths outputs;

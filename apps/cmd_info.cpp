@@ -61,7 +61,7 @@ void runInfo(const InfoOptions& o) {
 void addInfoCommand(CLI::App& app) {
   auto o = std::make_shared<InfoOptions>();
   CLI::App* sub = app.add_subcommand("info", "Format, fields, points, NaN count and bounds");
-  sub->add_option("files", o->files, "Point cloud files (.pcd, .ply, .bin)")->required();
+  sub->add_option("files", o->files, "Point cloud files (.pcd, .ply, .bin, .npy)")->required();
   addFormatOption(*sub, o->format, {"table", "csv", "json"});
   sub->callback([o] { runInfo(*o); });
 }

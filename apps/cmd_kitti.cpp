@@ -307,6 +307,7 @@ void run(const KittiOptions& o, const CLI::App& app) {
   if (!o.out_map.empty() && image.width == 0) {
     throw InputError("the map is empty: no point fell within the range and height bands");
   }
+  requireOccupiedCells(image, static_cast<std::uint32_t>(o.min_hits), o.out_map);
   const pcl::PointCloud<pcl::PointXYZ> global = mapper.globalCloud();
   OutputSet outputs;  // every output or none, committed once the report is printed
   if (!o.out_poses.empty()) {

@@ -107,8 +107,12 @@ void runLines(const LinesOptions& o, const CLI::App& app) {
   requireExtension("--png", o.png, {".png"}, "a PNG picture");
   requireExtension("--svg", o.svg, {".svg"}, "an SVG picture");
   // Options that would change nothing in this run are refused (issue 24, class 6).
-  refuseIgnored(app, "--purge", o.min_points > 0 || o.min_length > 0.0,
-                "with --min-points 0 and --min-length 0: nothing is purged");
+  // A piece holds at least one point: --min-points 1 purges no more than 0.
+  refuseIgnored(app, "--purge", o.min_points > 1 || o.min_length > 0.0,
+                "with --min-points " + std::to_string(o.min_points) +
+                    " and --min-length 0: nothing is purged (every segment has a point)");
+  refuseIgnored(app, "--purge", o.angle_deg > 0.0,
+                "with --angle-threshold-deg 0: there is no merge step to purge before or after");
   const bool sigmas_used = o.chi2 > 0.0 || o.format == "json";
   for (const char* option : {"--range-sigma", "--bearing-sigma-deg"}) {
     refuseIgnored(app, option, sigmas_used,
@@ -163,8 +167,7 @@ void runLines(const LinesOptions& o, const CLI::App& app) {
                                 o.file + " scan " + std::to_string(first) + ": " +
                                     std::to_string(results.front().size()) + " segments"));
   }
-  outputs.commit();
-
+  // The report is printed and checked before the drawings are committed (the class 4 rule).
   if (o.format == "json") {
     nlohmann::json scans = nlohmann::json::array();
     for (std::size_t k = 0; k < results.size(); ++k) {
@@ -181,7 +184,7 @@ void runLines(const LinesOptions& o, const CLI::App& app) {
                          {"scans_per_second", rate}})
                  .dump(2) +
              "\n",
-         "");
+         outputs);
     return;
   }
   Table t({"scan", "first_index", "last_index", "points", "length", "angle_deg", "start_x",
@@ -195,7 +198,7 @@ void runLines(const LinesOptions& o, const CLI::App& app) {
                 fixed(s.fit.alpha / kDeg, 2)});
     }
   }
-  emitTable(t, o.format);
+  emitTable(t, o.format, outputs);
 }
 
 }  // namespace
@@ -266,10 +269,13 @@ void addLinesCommand(CLI::App& app) {
       ->capture_default_str();
   addFormatOption(*sub, o->format, {"table", "csv", "json"});
   sub->add_option("--svg", o->svg, "Draw the scan and its segments (not with --all)")
+      ->check(kOutputFile)
       ->excludes("--all");
   sub->add_option("--png", o->png, "Draw the scan and its segments as PNG (not with --all)")
+      ->check(kOutputFile)
       ->excludes("--all");
   sub->add_option("--steps", o->steps, "Write one SVG per split/merge/purge step to DIR")
+      ->check(kOutputFile)
       ->excludes("--all");
   sub->callback([o, sub] { runLines(*o, *sub); });
 }

@@ -41,7 +41,7 @@ void run(const MapOptions& o) {
     OdometryRunOptions ro;
     ro.frames = frames;
     applyRangeOptions(o.ranges, o.profile, source->info(), ro.config, ro.profile);
-    poses = odometrySensorPoses(runOdometry(*source, ro), source->info());
+    poses = odometrySensorPoses(runOdometryNamed(*source, ro), source->info());
   } else {
     poses = referenceSensorPoses(*source, frames);
   }
@@ -63,6 +63,7 @@ void run(const MapOptions& o) {
   if (!o.out_map.empty() && image.width == 0) {
     throw InputError("the map is empty: no point fell within the height band");
   }
+  requireOccupiedCells(image, c.min_hits, o.out_map);
   OutputSet outputs;  // committed once the report is printed
   if (!o.out_map.empty()) {
     MapServerFiles files = mapServerFiles(o.out_map);
@@ -153,8 +154,8 @@ void addMapCommand(CLI::App& app) {
     }
     checkOccupancy2DOptions(*sub, o->grid);
     refuseIgnored(*sub, "--pcd-format", !o->out_cloud.empty(), "without --out-cloud");
-    checkRangeOptions(o->ranges);
-    checkSourceOptions(o->source);
+    checkRangeOptions(*sub, o->ranges);
+    checkSourceOptions(*sub, o->source);
     RolePaths outputs = {{"--out-cloud", o->out_cloud}};
     if (!o->out_map.empty()) {
       const MapServerFiles f = mapServerFiles(o->out_map);

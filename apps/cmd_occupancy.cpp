@@ -216,6 +216,7 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
   std::pair<double, double> band{0, 0};
   if (!o.band.empty()) band = parseBand(o.band);
   RolePaths inputs = withRole("input", o.inputs);
+  requireDistinctInputs(inputs);
   if (!from_file && o.inputs.size() == 1 && isDirectory(o.inputs[0]) && !o.frames.empty()) {
     inputs = kittiInputs(o.inputs[0], o.sequence, parseFramesOption(o.frames), true);
   }

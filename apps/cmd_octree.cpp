@@ -76,7 +76,7 @@ void runOctree(const OctreeOptions& o, const CLI::App& app) {
 void addOctreeCommand(CLI::App& app) {
   auto o = std::make_shared<OctreeOptions>();
   CLI::App* sub = app.add_subcommand("octree", "Adaptive octree: node counts and leaf means");
-  sub->add_option("file", o->file, "Point cloud (.pcd, .ply, .bin)")->required();
+  sub->add_option("file", o->file, "Point cloud (.pcd, .ply, .bin, .npy)")->required();
   sub->add_option("--max-points", o->max_points, "Split nodes holding more points than this")
       ->required()
       ->check(kCount);

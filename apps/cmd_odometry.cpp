@@ -44,8 +44,8 @@ void run(const OdometryOptions& o) {
               : o.deskew_azimuth ? DeskewMode::Azimuth
                                  : DeskewMode::Auto;
   const bool progress = isatty(STDERR_FILENO) != 0;
-  const OdometryRun r =
-      runOdometry(*source, ro, [&](const OdometryFrame& f, std::size_t done, std::size_t total) {
+  const OdometryRun r = runOdometryNamed(
+      *source, ro, [&](const OdometryFrame& f, std::size_t done, std::size_t total) {
         if (!progress) return;
         std::fprintf(stderr, "\rframe %zu/%zu  %.1f ms/scan  %.0f s left   ", done, total, f.ms,
                      secondsSince(t_start) / done * static_cast<double>(total - done));
@@ -88,7 +88,19 @@ void run(const OdometryOptions& o) {
   std::sort(ms.begin(), ms.end());
   const double median_ms = ms[ms.size() / 2];
   const LidarOdometryConfig& c = r.config;
+  // Where the range window and voxel came from: the profile, and the options that replaced its
+  // values (stated, never silent).
+  std::vector<std::string> given;
+  if (o.ranges.max_range) given.emplace_back("--max-range");
+  if (o.ranges.min_range) given.emplace_back("--min-range");
+  if (o.ranges.voxel_size) given.emplace_back("--voxel-size");
+  const std::string profile_name =
+      !o.profile.empty() ? o.profile : (source->info().kind == "kitti" ? "kitti" : "auto");
+  std::string origin = "profile " + profile_name + (r.profile.used ? " from the first scan" : "");
+  for (std::size_t i = 0; i < given.size(); ++i) origin += (i == 0 ? "; given: " : ", ") + given[i];
   const nlohmann::json settings = {{"profile", r.profile.used ? "auto" : "given"},
+                                   {"profile_name", profile_name},
+                                   {"given_options", given},
                                    {"max_range", c.max_range},
                                    {"min_range", c.min_range},
                                    {"voxel_size", c.voxel_size},
@@ -121,7 +133,7 @@ void run(const OdometryOptions& o) {
                   "settings: max_range %g m, min_range %g m, voxel %g m, coarse voxel %g m, "
                   "threshold cap %g m, deskew %s (%s)\n",
                   c.max_range, c.min_range, c.voxel_size, c.coarse_voxel_size, c.max_threshold,
-                  r.deskewed ? "on" : "off", r.profile.used ? "from the first scan" : "given");
+                  r.deskewed ? "on" : "off", origin.c_str());
     report += line;
     if (r.rpe) {
       const ErrorStatistics& t = r.rpe->translation_stats;
@@ -174,8 +186,8 @@ void addOdometryCommand(CLI::App& app) {
     if (o->deskew_azimuth && o->no_deskew) {
       throw CLI::ValidationError("--deskew", "cannot be given with --no-deskew");
     }
-    checkRangeOptions(o->ranges);
-    checkSourceOptions(o->source);
+    checkRangeOptions(*sub, o->ranges);
+    checkSourceOptions(*sub, o->source);
     requireDistinctFiles(sourceInputs(o->source), {{"--out-poses", o->out_poses}});
     requireExtension("--out-poses", o->out_poses, {".txt"}, "pose text");
     run(*o);

@@ -7,6 +7,7 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "metricmap/common/memory_budget.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/output_set.h"
 #include "metricmap/posegraph/g2o_io.h"
@@ -30,6 +31,19 @@ void run(const PoseGraphOptions& o) {
   opt.loop_loss = parseRobustLoss(o.loop_loss);
   opt.loss_scale = o.loss_scale;
   const bool planar = g.dimension == 2;
+  const std::size_t n_vertices = planar ? g.graph2d.vertexCount() : g.graph3d.vertexCount();
+  const std::size_t n_edges = planar ? g.graph2d.edgeCount() : g.graph3d.edgeCount();
+  if (n_edges == 0) {
+    throw InputError(o.input + ": " + std::to_string(n_vertices) +
+                     " vertices and no edge: nothing to optimise");
+  }
+  // Priced before Ceres builds anything (issue 24, the budget): the estimate optimize() checks.
+  checkMemory(
+      1, planar ? solverMemoryBytes(g.graph2d) : solverMemoryBytes(g.graph3d),
+      o.input + ": the solver (" + std::to_string(n_vertices) + " vertices, " +
+          std::to_string(n_edges) + " edges, " +
+          std::to_string(planar ? jacobianNonzeros(g.graph2d) : jacobianNonzeros(g.graph3d)) +
+          " Jacobian nonzeros)");
   const PoseGraphOptimizeResult r = planar ? optimize(g.graph2d, opt) : optimize(g.graph3d, opt);
   if (r.termination == PoseGraphTermination::Failure) {
     throw InputError(o.input + ": the optimisation failed: " + r.message);

@@ -2,10 +2,12 @@
 // trajectory in TUM form, the map (map_server), the pose graph (g2o), a picture, a report.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <numeric>
 
 #include <nlohmann/json.hpp>
 
@@ -41,6 +43,26 @@ Eigen::Isometry3d spatial(const Pose2D& p) {
   t.translation() << p.x, p.y, 0.0;
   t.linear() = Eigen::Matrix3d(Eigen::AngleAxisd(p.theta, Eigen::Vector3d::UnitZ()));
   return t;
+}
+
+/// TUM rows in stamp order: raw logs deliver scans out of order (the Intel log steps back 631
+/// times), and a TUM file's stamps increase. \throws InputError for two scans with one stamp
+Trajectory inStampOrder(const Trajectory& t, const std::string& path) {
+  std::vector<std::size_t> order(t.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return t.stamps[a] < t.stamps[b]; });
+  Trajectory sorted;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    if (k > 0 && t.stamps[order[k]] == t.stamps[order[k - 1]])
+      throw InputError(path + ": scans " + std::to_string(order[k - 1]) + " and " +
+                       std::to_string(order[k]) +
+                       " have the same stamp; --out-poses (TUM) needs "
+                       "one pose per stamp");
+    sorted.stamps.push_back(t.stamps[order[k]]);
+    sorted.poses.push_back(t.poses[order[k]]);
+  }
+  return sorted;
 }
 
 void writeOutputs(const Slam2DOptions& o, const Slam2D& slam, const Trajectory& trajectory,
@@ -109,13 +131,17 @@ void run(const Slam2DOptions& o) {
   if (!o.out_poses.empty() && !trajectory.hasStamps())
     throw InputError(o.source.path +
                      ": its scans have no time stamps: --out-poses (TUM) needs them");
+  if (!o.out_poses.empty()) trajectory = inStampOrder(trajectory, o.source.path);
   OutputSet outputs;  // committed once the report is printed
   const auto t_write = std::chrono::steady_clock::now();
   writeOutputs(o, slam, trajectory, outputs);
   const double write_seconds = secondsSince(t_write), total = secondsSince(start);
   const Slam2DStats& s = slam.stats();
   const double span =
-      trajectory.hasStamps() ? trajectory.stamps.back() - trajectory.stamps.front() : 0.0;
+      trajectory.hasStamps()
+          ? *std::max_element(trajectory.stamps.begin(), trajectory.stamps.end()) -
+                *std::min_element(trajectory.stamps.begin(), trajectory.stamps.end())
+          : 0.0;
   const nlohmann::json j = {
       {"input", o.source.path},
       {"scans", s.scans},
@@ -164,7 +190,8 @@ void addSlam2DCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "slam2d", "2D laser SLAM with loop closure on a CARMEN log: trajectory, map, pose graph");
   addSourceOptions(*sub, o->source);
-  sub->add_option("--out-poses", o->out_poses, "Trajectory in TUM form (the log's stamps)")
+  sub->add_option("--out-poses", o->out_poses,
+                  "Trajectory in TUM form: every scan at the log's stamp, in stamp order")
       ->check(kOutputFile);
   sub->add_option("--out-map", o->out_map, "Occupancy map (map_server PGM + YAML)")
       ->check(kOutputFile);

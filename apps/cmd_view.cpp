@@ -143,6 +143,7 @@ void run(const ViewOptions& o, const CLI::App& app) {
   }
   {
     RolePaths inputs = withRole("input", o.files);
+    requireDistinctInputs(inputs);
     inputs.emplace_back("--segments file", o.segments);
     requireDistinctFiles(inputs, {{"--screenshot", o.screenshot}});
     requireExtension("--screenshot", o.screenshot, {".png"}, "a PNG picture");
@@ -235,9 +236,10 @@ void run(const ViewOptions& o, const CLI::App& app) {
 void addViewCommand(CLI::App& app) {
   auto o = std::make_shared<ViewOptions>();
   CLI::App* sub = app.add_subcommand("view", "3D view of points with octree leaves or grid cells");
-  sub->add_option("files", o->files,
-                  "Point clouds (.pcd, .ply, .bin), scan logs or OctoMap maps (.bt, .ot); several "
-                  "are merged")
+  sub->add_option(
+         "files", o->files,
+         "Point clouds (.pcd, .ply, .bin, .npy), scan logs or OctoMap maps (.bt, .ot); several "
+         "are merged")
       ->required();
   sub->add_flag("--octree", o->octree, "Draw the adaptive octree's leaves");
   sub->add_option("--max-points", o->max_points, "Octree: split above this many points")
@@ -264,7 +266,8 @@ void addViewCommand(CLI::App& app) {
       ->check(kCount);
   sub->add_option("--preset", o->preset, "FILE is a scan-per-line log of this layout")
       ->check(CLI::IsMember({"urg04lx-mines"}));
-  sub->add_option("--screenshot", o->screenshot, "Render offscreen to this PNG and exit");
+  sub->add_option("--screenshot", o->screenshot, "Render offscreen to this PNG and exit")
+      ->check(kOutputFile);
   sub->add_option("--window-size", o->window_size, "WxH")->capture_default_str();
   sub->add_option("--camera", o->camera, "Initial view")
       ->check(CLI::IsMember({"top", "side", "iso"}))

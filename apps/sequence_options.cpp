@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "metricmap/common/format_number.h"
+#include "metricmap/common/parse_number.h"
 #include "metricmap/datasets/folder_source.h"
 #include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/exceptions.h"
@@ -28,7 +29,18 @@ void addSourceOptions(CLI::App& app, SourceOptions& o) {
       ->check(CLI::ExistingFile);
 }
 
-void checkSourceOptions(const SourceOptions& o) {
+void checkSourceOptions(const CLI::App& app, const SourceOptions& o) {
+  // Options the source would ignore (issue 24, class 6): refused, never dropped silently.
+  const std::string kind = scanSourceKind(o.path, o.format);
+  const std::string what = kind == "carmen"   ? "a CARMEN log"
+                           : kind == "folder" ? "a folder or list of scans"
+                                              : "this source";
+  refuseIgnored(app, "--sequence", kind == "kitti" || kind.empty(),
+                "on " + what + ": only a KITTI root has sequences");
+  for (const char* option : {"--times", "--reference"}) {
+    refuseIgnored(app, option, kind != "carmen",
+                  "on a CARMEN log: its lines carry the scans' stamps and odometry poses");
+  }
   if (o.frames.empty()) return;
   std::vector<std::size_t> f;
   try {
@@ -101,10 +113,29 @@ std::vector<std::size_t> selectedFrames(const SourceOptions& o, const ScanSource
   return frames;
 }
 
+OdometryRun runOdometryNamed(ScanSource& source, const OdometryRunOptions& options,
+                             const OdometryObserver& observer) {
+  try {
+    return runOdometry(source, options, observer);
+  } catch (const UsageError&) {
+    throw;
+  } catch (const std::invalid_argument& e) {
+    std::string what = e.what();
+    if (what.rfind("the first scan has ", 0) != 0) throw;
+    // "finite points": the points at a finite, non-zero range (all-zero points are finite)
+    const std::string finite = " finite points;";
+    if (const auto at = what.find(finite); at != std::string::npos)
+      what.replace(at, finite.size(), " points at a finite, non-zero range;");
+    const std::size_t first = options.frames.empty() ? 0 : options.frames.front();
+    throw InputError(source.scan(first).name + ": " + what);
+  }
+}
+
 void addRangeOptions(CLI::App& app, RangeOptions& o, std::string& profile) {
   app.add_option("--profile", profile,
                  "Range window and voxel: kitti (100 m, 3 m, 1 m voxel; the default for a KITTI "
-                 "source) or auto (from the first scan's ranges; the default otherwise)")
+                 "source) or auto (from the first scan's ranges; the default otherwise); "
+                 "--max-range, --min-range and --voxel-size given replace the profile's values")
       ->check(CLI::IsMember({"auto", "kitti"}));
   app.add_option("--max-range", o.max_range, "Drop returns farther (m); local map radius")
       ->check(kFinitePositive);
@@ -112,21 +143,28 @@ void addRangeOptions(CLI::App& app, RangeOptions& o, std::string& profile) {
   app.add_option("--voxel-size", o.voxel_size, "Local map voxel (m)")->check(kFinitePositive);
 }
 
-void checkRangeOptions(const RangeOptions& o) {
+void checkRangeOptions(const CLI::App& app, const RangeOptions& o) {
+  refuseIgnored(app, "--profile", !(o.max_range && o.min_range && o.voxel_size),
+                "with --max-range, --min-range and --voxel-size all given: it sets only the values "
+                "not given");
   // A range beyond 10 km or a voxel outside 1 mm .. 100 m is no sensor's: the map's 21-bit cells
   // would overflow or a single cell would hold the whole scan.
   if (o.max_range && *o.max_range > 1e4) {
-    throw CLI::ValidationError("--max-range", "at most 10000 m, got " + formatNumber(*o.max_range));
+    throw UsageError("--max-range: '" + quoteForMessage(givenText(app, "--max-range")) +
+                     "' is out of range: at most 10000 m");
   }
   if (o.min_range && *o.min_range > 1e4) {
-    throw CLI::ValidationError("--min-range", "at most 10000 m, got " + formatNumber(*o.min_range));
+    throw UsageError("--min-range: '" + quoteForMessage(givenText(app, "--min-range")) +
+                     "' is out of range: at most 10000 m");
   }
   if (o.voxel_size && !(*o.voxel_size >= 1e-3 && *o.voxel_size <= 100.0)) {
-    throw CLI::ValidationError("--voxel-size",
-                               "between 0.001 and 100 m, got " + formatNumber(*o.voxel_size));
+    throw UsageError("--voxel-size: '" + quoteForMessage(givenText(app, "--voxel-size")) +
+                     "' is out of range: 0.001 to 100 m");
   }
   if (o.min_range && o.max_range && !(*o.min_range < *o.max_range)) {
-    throw CLI::ValidationError("--min-range", "must be below --max-range");
+    throw UsageError("--min-range '" + quoteForMessage(givenText(app, "--min-range")) +
+                     "' must be below --max-range '" +
+                     quoteForMessage(givenText(app, "--max-range")) + "'");
   }
 }
 

@@ -127,14 +127,17 @@ TEST(CloudReader, ViewpointBecomesTheSensorPoseAndBadOnesAreRefused) {
       "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1\nHEIGHT 1\n";
   Cloud cloud;
   const LoadReport r = loadCloud(
-      tmp.write("vp.pcd", head + "VIEWPOINT 5 -2 1.5 0 0 0 2\nPOINTS 1\nDATA ascii\n1 2 3\n"),
+      tmp.write("vp.pcd", head + "VIEWPOINT 5 -2 1.5 0 0 0 1.005\nPOINTS 1\nDATA ascii\n1 2 3\n"),
       cloud);
   EXPECT_TRUE(r.has_viewpoint);
   EXPECT_EQ(cloud.sensor_origin_, Eigen::Vector4f(5, -2, 1.5f, 0));
-  EXPECT_NEAR(cloud.sensor_orientation_.z(), 1.0f, 1e-6f);  // normalised: 180 deg about z
+  // norm 1.005, within the tolerance of 0.01: normalised, 180 deg about z
+  EXPECT_NEAR(cloud.sensor_orientation_.z(), 1.0f, 1e-6f);
   EXPECT_NEAR(cloud.sensor_orientation_.w(), 0.0f, 1e-6f);
-  for (const char* bad : {"nan 0 0 1 0 0 0", "0x10 0 0 1 0 0 0", "0 0 0 0 0 0 0", "0 0 0 1 0 0",
-                          "0 0 0 1 0 0 0 0", "0 0 0 1 0 0 0x"}) {
+  // a quaternion of norm 2 (or 0.5) is no rotation: refused, never normalised silently
+  for (const char* bad :
+       {"nan 0 0 1 0 0 0", "0x10 0 0 1 0 0 0", "0 0 0 0 0 0 0", "0 0 0 1 0 0", "0 0 0 1 0 0 0 0",
+        "0 0 0 1 0 0 0x", "5 -2 1.5 0 0 0 2", "0 0 0 0.5 0 0 0"}) {
     const std::string path =
         tmp.write("bad.pcd", head + "VIEWPOINT " + bad + "\nPOINTS 1\nDATA ascii\n1 2 3\n");
     EXPECT_THROW(loadCloud(path, cloud), InputError) << bad;

@@ -15,6 +15,7 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/laser_scan.h"
+#include "scratch_files.h"
 
 namespace metricmap {
 namespace {
@@ -22,32 +23,11 @@ namespace {
 namespace fs = std::filesystem;
 const std::string kRegress = std::string(METRICMAP_SOURCE_DIR) + "/tests/fuzz_regressions/";
 
-/// Files written by these tests live in one directory, removed when the test binary exits.
-struct ScratchDir {
-  fs::path path = fs::temp_directory_path() / ("metricmap_hard_" + std::to_string(::getpid()));
-  ScratchDir() { fs::create_directories(path); }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
-const ScratchDir kScratch;
-
+const test_support::ScratchDir kScratch("metricmap_hard_");
 std::string writeTemp(const std::string& name, const std::string& text) {
-  const fs::path p = kScratch.path / name;
-  std::ofstream(p, std::ios::binary) << text;
-  return p.string();
+  return kScratch.write(name, text);
 }
-
-template <typename F>
-std::string inputErrorOf(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
+using test_support::inputErrorOf;
 
 }  // namespace
 

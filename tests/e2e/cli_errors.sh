@@ -29,7 +29,7 @@ expect 2 "--pcd-format" -- "$MM" grid "$scan" --cell-size 1 --pcd-format text
 expect 2 "subcommand" -- "$MM"
 expect 2 "frobnicate" -- "$MM" frobnicate
 # The list of commands comes from the registered ones (view and occupancy included).
-expect 2 "view, occupancy, evaluate, posegraph; see --help" -- "$MM" frobnicate
+expect 2 "view, occupancy, evaluate, posegraph, slam2d; see --help" -- "$MM" frobnicate
 
 # Input errors: exit 1, the message names the file.
 milk=$DATA/pcl_test_pcd/milk.pcd
@@ -101,7 +101,8 @@ expect 2 "strictly increasing" -- "$MM" heightmap "$kd" --camera "$kx" --auto-fl
 expect 2 "exactly one" -- "$MM" heightmap "$kd" --camera "$kx" "${hm[@]}"
 expect 2 "exactly one" -- "$MM" heightmap "$kd" --camera "$kx" --auto-floor --camera-height 1 "${hm[@]}"
 printf '1.0 0 0 0 0 0 0 1\n' >"$tmp/traj.txt"
-expect 1 "1 pose(s) for 2 frame(s)" -- "$MM" heightmap "$kd" "$kd" --camera "$kx" --trajectory "$tmp/traj.txt" "${hm[@]}"
+cp "$kd" "$tmp/kd2.tiff"  # a second frame: one file named twice is refused
+expect 1 "1 pose(s) for 2 frame(s)" -- "$MM" heightmap "$kd" "$tmp/kd2.tiff" --camera "$kx" --trajectory "$tmp/traj.txt" "${hm[@]}"
 printf '1.0 0 0 nan 0 0 0 1\n' >"$tmp/nan_traj.txt"
 expect 1 "$tmp/nan_traj.txt" -- "$MM" heightmap "$kd" --camera "$kx" --trajectory "$tmp/nan_traj.txt" "${hm[@]}"
 check "no map written after bad input" test ! -e "$tmp/hm_obstacles.png"

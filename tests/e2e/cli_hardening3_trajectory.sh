@@ -12,6 +12,9 @@ tumd=$D/open3d_tum_depth/TUM_depth.png
 tumc=$D/open3d_tum_depth/camera_primesense.json
 o=$tmp/o
 mkdir -p "$o"
+# further frames are copies: one file named twice is refused (issue 24)
+cp "$tumd" "$tmp/tum2.png"
+cp "$tumd" "$tmp/tum3.png"
 hm="--camera $tumc --resolution 0.05 --map-size 100 --z-bins 0.1,1 --out-prefix $o/hm"
 pose='0 0 0 1.5 0 0 0 1'
 printf '%s\n%s\n' "$pose" "$pose" >"$tmp/two.txt"
@@ -22,7 +25,7 @@ printf '%s\r\n%s' "$pose" "$pose" >"$tmp/crlf_two.txt"
 
 cases=(
   "1|two.txt: line 2 is a pose line beyond the 1 depth image(s) given|heightmap $tumd --trajectory $tmp/two.txt $hm"
-  "1|three.txt: line 3 is a pose line beyond the 2 depth image(s) given|heightmap $tumd $tumd --trajectory $tmp/three.txt $hm"
+  "1|three.txt: line 3 is a pose line beyond the 2 depth image(s) given|heightmap $tumd $tmp/tum2.png --trajectory $tmp/three.txt $hm"
   "1|commented.txt: line 6 is a pose line beyond the 1 depth image(s)|heightmap $tumd --trajectory $tmp/commented.txt $hm"
   "1|garbage.txt: line 2 is a pose line beyond|heightmap $tumd --trajectory $tmp/garbage.txt $hm"
   "1|crlf_two.txt: line 2 is a pose line beyond|heightmap $tumd --trajectory $tmp/crlf_two.txt $hm"
@@ -35,7 +38,7 @@ printf '%s\r\n%s' "$pose" "$pose" >"$tmp/crlf.txt"
 check "one pose line per image, comments and blank lines after it" bash -c \
   "'$MM' heightmap '$tumd' --trajectory '$tmp/one_trailing.txt' $hm >/dev/null"
 check "CRLF lines, the last without a newline" bash -c \
-  "'$MM' heightmap '$tumd' '$tumd' --trajectory '$tmp/crlf.txt' $hm >/dev/null"
+  "'$MM' heightmap '$tumd' '$tmp/tum2.png' --trajectory '$tmp/crlf.txt' $hm >/dev/null"
 check "too few lines stay an error" bash -c \
-  "! '$MM' heightmap '$tumd' '$tumd' '$tumd' --trajectory '$tmp/two.txt' $hm 2>/dev/null"
+  "! '$MM' heightmap '$tumd' '$tmp/tum2.png' '$tmp/tum3.png' --trajectory '$tmp/two.txt' $hm 2>/dev/null"
 finish

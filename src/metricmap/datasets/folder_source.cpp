@@ -4,11 +4,14 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 #include <system_error>
 
+#include "metricmap/common/parse_number.h"
 #include "metricmap/datasets/reference_file.h"
 #include "metricmap/exceptions.h"
+#include "metricmap/io/file_identity.h"
 #include "metricmap/io/input_file.h"
 #include "metricmap/io/scan_file.h"
 
@@ -67,7 +70,16 @@ std::vector<std::string> listFolder(const std::string& dir) {
   std::sort(names.begin(), names.end(), naturalLess);
   std::vector<std::string> paths;
   paths.reserve(names.size());
-  for (const std::string& n : names) paths.push_back((fs::path(dir) / n).string());
+  std::map<std::pair<std::uint64_t, std::uint64_t>, std::string> seen;
+  for (const std::string& n : names) {
+    paths.push_back((fs::path(dir) / n).string());
+    const FileIdentity id = fileIdentity(paths.back());
+    const auto [it, fresh] = seen.emplace(std::make_pair(id.device, id.inode), n);
+    if (id.exists && !fresh) {
+      throw InputError(dir + ": " + n + " and " + it->second +
+                       " are the same file (a link): a scan would be read twice");
+    }
+  }
   return paths;
 }
 
@@ -75,6 +87,7 @@ std::vector<std::string> readList(const std::string& list) {
   std::ifstream in = openRegularFile(list, std::ios::in);
   const fs::path base = fs::path(list).parent_path();
   std::vector<std::string> paths;
+  std::map<std::pair<std::uint64_t, std::uint64_t>, std::pair<std::size_t, std::string>> seen;
   std::string line;
   for (std::size_t n = 1; std::getline(in, line); ++n) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -89,6 +102,16 @@ std::vector<std::string> readList(const std::string& list) {
     if (!fs::is_regular_file(p, ec)) {
       throw InputError(list + ": line " + std::to_string(n) + ": " + p.string() +
                        " is not a readable file");
+    }
+    // A scan named twice (however spelled: a relative and an absolute path, a link) would be
+    // registered and mapped twice.
+    const FileIdentity id = fileIdentity(p.string());
+    const auto [it, fresh] =
+        seen.emplace(std::make_pair(id.device, id.inode), std::make_pair(n, line));
+    if (id.exists && !fresh) {
+      throw InputError(list + ": line " + std::to_string(n) + " ('" + quoteForMessage(line) +
+                       "') names the scan of line " + std::to_string(it->second.first) + " ('" +
+                       quoteForMessage(it->second.second) + "') again: a scan is listed once");
     }
     paths.push_back(p.string());
   }

@@ -82,6 +82,11 @@ std::vector<std::size_t> parseFrameList(const std::string& text, std::size_t max
     if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos || s.size() > 9) {
       throw std::invalid_argument("frame list: '" + s + "' is not a frame number");
     }
+    // As every count option: decimal without a leading zero (010 is not silently 10, nor 8).
+    if (s.size() > 1 && s[0] == '0') {
+      throw std::invalid_argument("frame list: '" + s +
+                                  "' has a leading zero: write the frame number without it");
+    }
     return static_cast<std::size_t>(std::stoul(s));
   };
   if (!text.empty() && text.back() == ',')  // getline drops a trailing empty item

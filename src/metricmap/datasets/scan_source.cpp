@@ -38,6 +38,17 @@ bool looksLikeLaserLog(const std::string& path) {
 
 }  // namespace
 
+std::string scanSourceKind(const std::string& path, const std::string& format) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return std::string();
+  const bool dir = fs::is_directory(path, ec);
+  if (format == "kitti" || (format == "auto" && dir && looksLikeKittiRoot(path))) return "kitti";
+  if (format == "carmen" || (format == "auto" && !dir && looksLikeLaserLog(path))) return "carmen";
+  if (format == "folder" || (format == "auto" && (dir || endsWith(lower(path), ".txt"))))
+    return "folder";
+  return std::string();
+}
+
 std::unique_ptr<ScanSource> openScanSource(const std::string& path,
                                            const ScanSourceOptions& options) {
   const std::string& f = options.format;

@@ -92,6 +92,11 @@ struct ScanSourceOptions {
   std::string times;
 };
 
+/// \brief The kind of source openScanSource opens for `path` read as `format` ("auto",
+/// "kitti", "folder", "carmen"): "kitti", "folder" or "carmen", or "" when it would refuse the
+/// path (missing, or none of these). Reads nothing but the file system's entries.
+std::string scanSourceKind(const std::string& path, const std::string& format);
+
 /// \brief Open the source at `path`: a KITTI odometry root (has sequences/), a folder of scans
 /// (.pcd .ply .bin .npy, one format), a list file (.txt of scan paths) or a CARMEN log
 /// (.clf/.log, optionally .gz/.bz2).

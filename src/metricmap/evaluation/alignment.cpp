@@ -1,9 +1,13 @@
 #include "metricmap/evaluation/alignment.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
 
@@ -49,14 +53,37 @@ Alignment alignPositions(const std::vector<Eigen::Isometry3d>& estimate,
     dst.col(i) = reference[static_cast<std::size_t>(i)].translation();
   }
   // evo's check: the cross-covariance must have rank >= 2 (numpy's matrix_rank tolerance).
-  const Eigen::Matrix3d cov = (dst.colwise() - dst.rowwise().mean()) *
-                              (src.colwise() - src.rowwise().mean()).transpose() /
-                              static_cast<double>(n);
+  const Eigen::Matrix3Xd src_c = src.colwise() - src.rowwise().mean();
+  const Eigen::Matrix3Xd dst_c = dst.colwise() - dst.rowwise().mean();
+  const Eigen::Matrix3d cov = dst_c * src_c.transpose() / static_cast<double>(n);
   const Eigen::Vector3d sv = Eigen::JacobiSVD<Eigen::Matrix3d>(cov).singularValues();
   if (!(sv(1) > sv(0) * 3.0 * std::numeric_limits<double>::epsilon())) {
     throw std::invalid_argument(
         "alignment: the positions are collinear or coincide (cross-covariance rank below 2), "
         "so no rotation aligns them; use --align none");
+  }
+  // Rank 2 in floating point is not enough: the rotation about the positions' main direction is
+  // fixed only by what the two trajectories share across it. Near-collinear positions (a spread
+  // across below 1e-4 of the spread along, i.e. second singular value below 1e-8 of the first),
+  // or a spread across that the two do not share (noise: the second singular value of the
+  // cross-covariance below a quarter of what the positions' own second variances would give if
+  // they agreed) leave that rotation to chance: refused, never a rotation by noise.
+  const Eigen::Vector3d vs = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(
+                                 src_c * src_c.transpose() / static_cast<double>(n))
+                                 .eigenvalues();  // increasing
+  const Eigen::Vector3d vd = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(
+                                 dst_c * dst_c.transpose() / static_cast<double>(n))
+                                 .eigenvalues();
+  const double shared = std::sqrt(std::max(0.0, vs(1)) * std::max(0.0, vd(1)));
+  if (!(sv(1) > sv(0) * 1e-8) || !(sv(1) >= 0.25 * shared)) {
+    char ratio[64];
+    std::snprintf(ratio, sizeof ratio, "%.3g", sv(1) / sv(0));
+    throw std::invalid_argument(
+        std::string("alignment: the positions are nearly collinear (cross-covariance singular "
+                    "values ") +
+        ratio + " of the largest across the path" +
+        (sv(1) > sv(0) * 1e-8 ? ", and what lies across it differs between the trajectories" : "") +
+        "), so the rotation about the path is not determined; use --align none");
   }
   const Eigen::Matrix4d t = Eigen::umeyama(src, dst, mode == AlignmentMode::Similarity);
   Alignment a;

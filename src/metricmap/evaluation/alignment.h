@@ -35,7 +35,11 @@ struct Alignment {
 /// None).
 /// \throws std::invalid_argument when the counts differ or are zero, or (Rigid, Similarity)
 /// when the positions' cross-covariance has rank below 2 (collinear or coinciding positions:
-/// the rotation is not determined; evo refuses these too)
+/// the rotation is not determined; evo refuses these too), or is nearly so: its second singular
+/// value below 1e-8 of the first (a spread across the path below 1e-4 of the spread along), or
+/// below a quarter of sqrt(λ2(estimate) λ2(reference)), the second variances of the two position
+/// sets (what lies across the path is not shared: noise). The rotation about the path would be
+/// set by noise (a straight path aligned with a 150-degree turn); no fallback is guessed.
 Alignment alignPositions(const std::vector<Eigen::Isometry3d>& estimate,
                          const std::vector<Eigen::Isometry3d>& reference, AlignmentMode mode);
 

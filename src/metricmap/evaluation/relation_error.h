@@ -33,7 +33,9 @@ struct RelationError {
 /// it is within `max_time_diff` seconds (a relation whose stamp has none is skipped and
 /// counted; the benchmark's metricEvaluator looks within 0.1 s and otherwise interpolates
 /// odometry, which an estimate does not have). Standard deviations divide by n - 1.
-/// \throws std::invalid_argument when the estimate has no stamps or they do not increase
+/// Stamps need not increase (raw logs step back): they are searched in sorted order, the first
+/// of equal stamps in the estimate's order winning.
+/// \throws std::invalid_argument when the estimate has no stamps or one is not finite
 RelationError relationError(const Trajectory& estimate, const std::vector<PoseRelation>& relations,
                             double max_time_diff = 0.01);
 

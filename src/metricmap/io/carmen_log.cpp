@@ -32,6 +32,13 @@ bool count(std::string_view s, std::size_t min, std::size_t available, std::size
   }
 }
 
+/// "stamp host logger_stamp" at t[first]: two numbers around a host name that is not one (a
+/// number there means the beam count and the ranges disagree).
+bool stampHostStamp(const std::vector<std::string_view>& t, std::size_t first, double& stamp) {
+  double host = 0.0, logger = 0.0;
+  return number(t[first], stamp) && !number(t[first + 1], host) && number(t[first + 2], logger);
+}
+
 bool pose(const std::vector<std::string_view>& t, std::size_t first, Pose2D& p) {
   return number(t[first], p.x) && number(t[first + 1], p.y) && number(t[first + 2], p.theta);
 }
@@ -45,7 +52,7 @@ bool ranges(const std::vector<std::string_view>& t, std::size_t first, std::size
     double r = 0.0;
     if (!number(t[first + k], r)) return false;
     scan.angles[k] = start + step * static_cast<double>(k);
-    scan.ranges[k] = (r > 0.0 && r <= max_range) ? r : kNaN;
+    scan.ranges[k] = (r > 0.0 && r <= max_range && r <= kMaxLaserRange) ? r : kNaN;
   }
   return true;
 }
@@ -56,14 +63,18 @@ bool parseFlaser(const std::vector<std::string_view>& t, CarmenLaser& out) {
   const double step =
       (n % 2 == 1 && n > 1) ? M_PI / static_cast<double>(n - 1) : M_PI / static_cast<double>(n);
   if (!ranges(t, 2, n, -M_PI / 2, step, INFINITY, out.scan)) return false;
+  // What follows the n ranges tells whether n counts them: nothing (the oldest form), the two
+  // poses, or the poses, stamp, host and logger stamp. Any other count of tokens (a count one
+  // above or below the ranges given, a cut or run-on line) is malformed, never ranges and poses
+  // shifted by one.
   const std::size_t rest = t.size() - 2 - n, tail = 2 + n;
   if (rest == 0) return true;  // oldest form: ranges only
-  if (rest < 6) return false;  // cut inside the poses
+  if (rest != 6 && rest != 9) return false;
   Pose2D laser, odom;
   if (!pose(t, tail, laser) || !pose(t, tail + 3, odom)) return false;
   out.laser_pose = laser;
   out.odometry = odom;
-  return rest == 6 || number(t[tail + 6], out.stamp);
+  return rest == 6 || stampHostStamp(t, tail + 6, out.stamp);
 }
 
 bool parseRobotLaser(const std::vector<std::string_view>& t, CarmenLaser& out) {
@@ -81,15 +92,22 @@ bool parseRobotLaser(const std::vector<std::string_view>& t, CarmenLaser& out) {
   std::size_t m = 0;
   if (!count(t[k], 0, t.size() - k - 1, m)) return false;
   k += 1 + m;  // remissions: not kept
+  // As FLASER: nothing, the two poses, the poses and tv rv forward_safety side_safety
+  // turn_axis, or those and stamp, host and logger stamp; any other tail is malformed.
   const std::size_t rest = t.size() - k;
   if (rest == 0) return true;
-  if (rest < 6) return false;
+  if (rest != 6 && rest != 11 && rest != 14) return false;
   Pose2D laser, robot;
   if (!pose(t, k, laser) || !pose(t, k + 3, robot)) return false;
   out.laser_pose = laser;
   out.odometry = robot;
-  // tv rv forward_safety side_safety turn_axis, then the stamp.
-  return rest < 12 || number(t[k + 11], out.stamp);
+  if (rest == 11) {
+    double v = 0.0;
+    for (std::size_t i = k + 6; i < k + 11; ++i) {
+      if (!number(t[i], v)) return false;
+    }
+  }
+  return rest < 14 || stampHostStamp(t, k + 11, out.stamp);
 }
 
 }  // namespace

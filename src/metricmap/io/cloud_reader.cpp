@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/conversions.h>
@@ -13,6 +14,7 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/io/input_file.h"
 #include "metricmap/io/kitti_bin.h"
+#include "metricmap/io/npy_reader.h"
 #include "metricmap/io/pcd_reader.h"
 #include "metricmap/io/ply_check.h"
 
@@ -35,6 +37,39 @@ void readPly(const std::string& path, pcl::PCLPointCloud2& blob, LoadReport& rep
   pcl::PLYReader reader;
   if (reader.read(path, blob) < 0)
     throw InputError(path + ": pcl::io could not read this PLY file");
+}
+
+/// A NumPy (N, C >= 3) array as a cloud of float32 x y z (and intensity, the fourth column), as
+/// the scan sources read it: every cloud-reading command takes the same files.
+void readNpy(const std::string& path, pcl::PCLPointCloud2& blob, LoadReport& report) {
+  const NpyArray a = readNpyPoints(path);
+  report.format = "npy";
+  if (a.rows > std::numeric_limits<std::uint32_t>::max()) {
+    throw InputError(path + ": " + std::to_string(a.rows) + " rows, more than a cloud holds");
+  }
+  const std::uint32_t nf = a.cols >= 4 ? 4 : 3;
+  const char* names[] = {"x", "y", "z", "intensity"};
+  blob.fields.clear();
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    pcl::PCLPointField field;
+    field.name = names[f];
+    field.offset = 4 * f;
+    field.datatype = pcl::PCLPointField::FLOAT32;
+    field.count = 1;
+    blob.fields.push_back(field);
+  }
+  blob.width = static_cast<std::uint32_t>(a.rows);
+  blob.height = 1;
+  blob.point_step = 4 * nf;
+  blob.row_step = blob.point_step * blob.width;
+  blob.is_dense = false;
+  blob.data.resize(static_cast<std::size_t>(blob.point_step) * a.rows);
+  for (std::size_t r = 0; r < a.rows; ++r) {
+    for (std::uint32_t f = 0; f < nf; ++f) {
+      const float v = static_cast<float>(a.values[r * a.cols + f]);
+      std::memcpy(blob.data.data() + r * blob.point_step + 4 * f, &v, 4);
+    }
+  }
 }
 
 void checkXyz(const std::string& path, const pcl::PCLPointCloud2& blob) {
@@ -85,8 +120,10 @@ LoadReport loadCloudBlob(const std::string& path, pcl::PCLPointCloud2& blob) {
   } else if (ext == "bin") {
     readKittiBin(path, blob);
     report.format = "kitti bin";
+  } else if (ext == "npy") {
+    readNpy(path, blob, report);
   } else {
-    throw InputError(path + ": unknown extension (expected .pcd, .ply or .bin)");
+    throw InputError(path + ": unknown extension (expected .pcd, .ply, .bin or .npy)");
   }
   for (const auto& f : blob.fields) report.fields.push_back(f.name);
   report.width = blob.width;

@@ -83,4 +83,17 @@ std::optional<FileClash> findFileClash(const std::vector<RolePath>& inputs,
   return std::nullopt;
 }
 
+std::optional<std::pair<RolePath, RolePath>> findRepeatedInput(
+    const std::vector<RolePath>& inputs) {
+  std::map<std::pair<std::uint64_t, std::uint64_t>, const RolePath*> seen;
+  for (const RolePath& in : inputs) {
+    if (in.second.empty()) continue;
+    const FileIdentity id = fileIdentity(in.second);
+    if (!id.exists) continue;
+    const auto [it, fresh] = seen.emplace(std::make_pair(id.device, id.inode), &in);
+    if (!fresh) return std::make_pair(*it->second, in);
+  }
+  return std::nullopt;
+}
+
 }  // namespace metricmap

@@ -48,4 +48,10 @@ struct FileClash {
 std::optional<FileClash> findFileClash(const std::vector<RolePath>& inputs,
                                        const std::vector<RolePath>& outputs);
 
+/// \brief The first two `inputs` that name one existing file however spelled (`a.pcd` and
+/// `./a.pcd`, a link to it), in the order given: `first` is the earlier. Nothing when every
+/// existing input is a distinct file; paths that do not exist and empty paths are skipped (their
+/// readers report them). One stat per input.
+std::optional<std::pair<RolePath, RolePath>> findRepeatedInput(const std::vector<RolePath>& inputs);
+
 }  // namespace metricmap

@@ -54,6 +54,15 @@ void requireScans(const std::string& path, const ScanLog& log) {
                           ? " (" + std::to_string(log.skipped_lines) + " malformed lines skipped)"
                           : std::string()));
   }
+  // Scans whose every beam is invalid (ranges zero, negative or beyond kMaxLaserRange) leave
+  // nothing to segment or map: refused as a log without scans is.
+  for (const LaserScan& scan : log.scans) {
+    for (const double r : scan.ranges) {
+      if (std::isfinite(r)) return;
+    }
+  }
+  throw InputError(path + ": no valid beam in its " + std::to_string(log.scans.size()) +
+                   " scan(s): every range is zero, negative or beyond 10 km");
 }
 
 void warnSkipped(const std::string& path, ScanLog& log) {
@@ -73,7 +82,7 @@ bool fillRanges(const std::vector<std::string>& t, std::size_t first, std::size_
     if (!parseDouble(t[first + k], raw)) return false;
     const double r = raw * scale;
     scan.angles[k] = start + step * static_cast<double>(k);
-    scan.ranges[k] = (r >= min_r && r <= max_r && r > 0.0) ? r : kNaN;
+    scan.ranges[k] = (r >= min_r && r <= max_r && r > 0.0 && r <= kMaxLaserRange) ? r : kNaN;
   }
   return true;
 }
@@ -159,7 +168,7 @@ ScanLog readAngleRangeCsv(const std::string& path) {
                        quoteForMessage(line) + "'");
     }
     scan.angles.push_back(a);
-    scan.ranges.push_back(r > 0.0 ? r : kNaN);
+    scan.ranges.push_back(r > 0.0 && r <= kMaxLaserRange ? r : kNaN);
   }
   if (!scan.angles.empty()) log.scans.push_back(std::move(scan));
   requireScans(path, log);

@@ -15,6 +15,11 @@
 
 namespace metricmap {
 
+/// \brief The farthest range any 2D laser reports (10 km, the bound of the odometry's
+/// --max-range): a larger value in a log (1e39, a garbled token) is no return, an invalid beam
+/// as a zero range is, in every reader (CSV, one-scan-per-line logs, CARMEN); never a point.
+inline constexpr double kMaxLaserRange = 1e4;
+
 /// \brief One scan: beam k has angles[k] (radians, counter-clockwise, x forward) and ranges[k]
 /// (metres; NaN where the beam is invalid).
 struct LaserScan {

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "metricmap/common/format_number.h"
 #include "metricmap/common/parse_number.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/input_file.h"
@@ -128,6 +129,13 @@ void parseHeader(const std::string& path, std::istream& in, PcdHeader& h) {
       const double qn = h.viewpoint[3] * h.viewpoint[3] + h.viewpoint[4] * h.viewpoint[4] +
                         h.viewpoint[5] * h.viewpoint[5] + h.viewpoint[6] * h.viewpoint[6];
       if (!(qn > 1e-12)) fail(path, "VIEWPOINT quaternion is zero");
+      // A rotation's quaternion has norm 1; beyond the TUM reader's tolerance (0.01) the line is
+      // not a sensor pose written with limited digits, and normalising it would guess.
+      if (!(std::fabs(std::sqrt(qn) - 1.0) <= 1e-2)) {
+        fail(path, "VIEWPOINT quaternion (" + std::string(t[4]) + " " + std::string(t[5]) + " " +
+                       std::string(t[6]) + " " + std::string(t[7]) + ") has norm " +
+                       formatNumber(std::sqrt(qn)) + ", not 1 within 0.01: it is not a rotation");
+      }
       h.has_viewpoint = true;
     } else if (key == "DATA") {
       if (t.size() != 2 || (t[1] != "ascii" && t[1] != "binary" && t[1] != "binary_compressed")) {

@@ -9,6 +9,7 @@
 
 #include <Eigen/Geometry>
 
+#include "metricmap/common/format_number.h"
 #include "metricmap/common/parse_number.h"
 #include "metricmap/common/rigid_transform.h"
 #include "metricmap/datasets/kitti_sequence.h"
@@ -37,11 +38,10 @@ constexpr double kQuaternionNormTolerance = 1e-2;
 void requireIncreasing(double stamp, const std::vector<double>& stamps, const std::string& path,
                        std::size_t line) {
   if (!stamps.empty() && !(stamp > stamps.back())) {
-    std::ostringstream os;
-    os.precision(17);
-    os << where(path, line) << ": time stamp " << stamp << " is not after the one before ("
-       << stamps.back() << "); stamps must increase strictly";
-    throw InputError(os.str());
+    // the shortest text that reads back as each value (0.1, never 0.10000000000000001)
+    throw InputError(where(path, line) + ": time stamp " + formatNumber(stamp) +
+                     " is not after the one before (" + formatNumber(stamps.back()) +
+                     "); stamps must increase strictly");
   }
 }
 

@@ -11,6 +11,7 @@
 #include <Eigen/Cholesky>
 
 #include "metricmap/common/format_number.h"
+#include "metricmap/common/memory_budget.h"
 #include "metricmap/common/parse_number.h"
 #include "metricmap/posegraph/edge_error.h"
 
@@ -241,7 +242,48 @@ const char* terminationName(PoseGraphTermination termination) {
   }
 }
 
+namespace {
+
+/// Bytes per vertex and per edge of a graph whose poses have `params` numbers (`tangent` on the
+/// manifold) and whose edges have `residuals` numbers, as solverMemoryBytes documents.
+std::uint64_t solverBytes(std::uint64_t vertices, std::uint64_t edges, std::uint64_t params,
+                          std::uint64_t tangent, std::uint64_t residuals, std::uint64_t blocks) {
+  constexpr std::uint64_t kBlock = 256, kNonzero = 8 + 4, kFill = 4;
+  const std::uint64_t per_vertex = 4 * 8 * params + tangent * tangent * kNonzero + blocks * kBlock;
+  const std::uint64_t per_edge = residuals * 8 * 4 + residuals * 2 * (params + tangent) * kNonzero +
+                                 2 * tangent * tangent * kNonzero * kFill + kBlock;
+  return vertices * per_vertex + edges * per_edge;
+}
+
+/// CapacityError before a problem beyond the budget is built.
+template <typename Graph>
+void checkSolverBudget(const Graph& graph) {
+  checkMemory(1, solverMemoryBytes(graph),
+              "the pose graph's solver (" + std::to_string(graph.vertexCount()) + " vertices, " +
+                  std::to_string(graph.edgeCount()) + " edges, " +
+                  std::to_string(jacobianNonzeros(graph)) + " Jacobian nonzeros)");
+}
+
+}  // namespace
+
+std::uint64_t solverMemoryBytes(const PoseGraph2D& graph) {
+  return solverBytes(graph.vertexCount(), graph.edgeCount(), 3, 3, 3, 1);
+}
+
+std::uint64_t solverMemoryBytes(const PoseGraph3D& graph) {
+  return solverBytes(graph.vertexCount(), graph.edgeCount(), 7, 6, 6, 2);
+}
+
+std::uint64_t jacobianNonzeros(const PoseGraph2D& graph) {
+  return static_cast<std::uint64_t>(graph.edgeCount()) * 3 * 6;
+}
+
+std::uint64_t jacobianNonzeros(const PoseGraph3D& graph) {
+  return static_cast<std::uint64_t>(graph.edgeCount()) * 6 * 14;
+}
+
 PoseGraphOptimizeResult optimize(PoseGraph2D& graph, const PoseGraphOptimizeOptions& options) {
+  checkSolverBudget(graph);
   Se2Manifold manifold;  // outlives the problem, which does not own it
   Run run(options, kDefaultLossScale2D);
   PoseGraphOptimizeResult result;
@@ -286,6 +328,7 @@ PoseGraphOptimizeResult optimize(PoseGraph2D& graph, const PoseGraphOptimizeOpti
 }
 
 PoseGraphOptimizeResult optimize(PoseGraph3D& graph, const PoseGraphOptimizeOptions& options) {
+  checkSolverBudget(graph);
   ceres::EigenQuaternionManifold manifold;  // outlives the problem, which does not own it
   Run run(options, kDefaultLossScale3D);
   PoseGraphOptimizeResult result;

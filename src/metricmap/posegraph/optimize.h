@@ -7,6 +7,7 @@
 ///
 /// Ceres is linked privately: this header does not include it.
 
+#include <cstdint>
 #include <string>
 
 #include "metricmap/posegraph/pose_graph.h"
@@ -61,10 +62,26 @@ struct PoseGraphOptimizeResult {
   std::string message;        ///< Ceres' reason for stopping
 };
 
+/// \brief The memory the solver of optimize() needs for `graph`, estimated from above: per
+/// vertex its parameters (with gradient, step and trial copies), the diagonal block of the
+/// normal equations and Ceres' bookkeeping (256 bytes a block); per edge its residuals, its
+/// Jacobian's nonzeros (value and index, ambient and manifold columns: 2D 3 x 6, 3D 6 x 14 plus
+/// 6 x 12) and two off-diagonal blocks of the normal equations with room for four times their
+/// size of Cholesky fill-in.
+std::uint64_t solverMemoryBytes(const PoseGraph2D& graph);
+/// \copydoc solverMemoryBytes(const PoseGraph2D&)
+std::uint64_t solverMemoryBytes(const PoseGraph3D& graph);
+/// \brief The nonzeros of the edges' Jacobian (ambient columns): 18 an edge in 2D, 84 in 3D.
+std::uint64_t jacobianNonzeros(const PoseGraph2D& graph);
+/// \copydoc jacobianNonzeros(const PoseGraph2D&)
+std::uint64_t jacobianNonzeros(const PoseGraph3D& graph);
+
 /// \brief Optimise the poses of the non-fixed vertices in place (vertices without edges stay).
 /// Angles of the result are wrapped to [-π, π), quaternions normalised. On Failure the poses are
 /// left as they were. A graph with no edge returns at once (Converged, no iteration).
 /// \throws std::invalid_argument for options out of range
+/// \throws CapacityError when solverMemoryBytes() is beyond the memory budget (checked before
+/// the problem is built)
 PoseGraphOptimizeResult optimize(PoseGraph2D& graph, const PoseGraphOptimizeOptions& options = {});
 /// \copydoc optimize(PoseGraph2D&, const PoseGraphOptimizeOptions&)
 PoseGraphOptimizeResult optimize(PoseGraph3D& graph, const PoseGraphOptimizeOptions& options = {});

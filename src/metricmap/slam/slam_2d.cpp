@@ -1,5 +1,6 @@
 #include "metricmap/slam/slam_2d.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <deque>
@@ -97,6 +98,7 @@ void validateSlam2DConfig(const Slam2DConfig& c) {
   need(c.loop_max_distance >= 0 && !std::isnan(c.loop_max_distance),
        "loop_max_distance must be >= 0");
   need(c.loop_every_n_nodes >= 1, "loop_every_n_nodes must be >= 1");
+  need(c.loop_search_points >= 10, "loop_search_points must be >= 10");
   need(c.loop_min_overlap >= 0 && c.loop_min_overlap <= 1, "loop_min_overlap must be in [0, 1]");
   need(c.loop_max_chi2 > 0, "loop_max_chi2 must be > 0");
   need(c.branch_and_bound_depth >= 1 && c.branch_and_bound_depth <= 16,
@@ -110,6 +112,7 @@ void validateSlam2DConfig(const Slam2DConfig& c) {
   need(std::isfinite(c.loop_rotation_sigma_deg) && c.loop_rotation_sigma_deg > 0,
        "loop_rotation_sigma_deg must be > 0");
   need(c.wide_every_n_nodes >= 1, "wide_every_n_nodes must be >= 1");
+  need(c.loop_max_submaps >= 1, "loop_max_submaps must be >= 1");
   need(std::isfinite(c.wide_linear_window) && c.wide_linear_window > 0 &&
            c.wide_linear_window <= 100,
        "wide_linear_window must be in (0, 100] m");
@@ -152,6 +155,7 @@ struct Slam2D::Impl {
   std::vector<LoopClosure2D> loops;
   std::optional<Pose2D> last_odometry;
   double last_node_stamp = 0.0;
+  std::size_t last_loop_node = 0;
   std::size_t nodes_at_last_optimization = 0;
   bool loops_since_optimization = false;
   Pose2D correction;  ///< global <- local, from the last optimisation
@@ -236,23 +240,56 @@ struct Slam2D::Impl {
     const auto t0 = Clock::now();
     const Node& node = nodes[n];
     const Pose2D g = globalOf(n);
+    // The search scores a spread subset of the points (its cost is linear in them); the
+    // refinement and the score threshold use them all.
+    std::vector<Eigen::Vector2f> coarse;
+    const std::size_t stride = (node.points.size() + config.loop_search_points - 1) /
+                               std::max<std::size_t>(1, config.loop_search_points);
+    for (std::size_t k = 0; k < node.points.size(); k += std::max<std::size_t>(1, stride))
+      coarse.push_back(node.points[k]);
+    struct Candidate {
+      std::size_t submap;
+      bool wide;
+      double distance;
+      Pose2D initial;  // the node's estimate in the submap's frame
+    };
+    std::vector<Candidate> near_list, wide_list;
+    // The wide search is for a robot that has lost its map: only after a stretch of nodes
+    // without any loop closure.
+    const bool lost = n >= last_loop_node + config.wide_idle_nodes;
     for (std::size_t s = 0; s < submaps.size(); ++s) {
       Submap& sub = submaps[s];
       if (!sub.matcher) continue;
       // Submaps the local chain has just left need no loop edge: it is accurate there.
       if (sub.last_node + config.loop_min_node_gap > n) continue;
-      const bool old = sub.last_node + config.wide_min_node_gap <= n;
-      if (!(near || (wide && old))) continue;
-      const bool use_wide = wide && old;
+      const bool use_wide = wide && lost && sub.last_node + config.wide_min_node_gap <= n;
+      if (!near && !use_wide) continue;
       const Pose2D ga = globalOf(sub.anchor), la = nodes[sub.anchor].local;
       const Pose2D local_to_global = compose(ga, inverse(la));
       const Eigen::Vector2f c = apply(local_to_global, sub.centre_local.cast<float>());
-      if (std::hypot(c.x() - g.x, c.y() - g.y) > config.loop_max_distance) continue;
-      const Pose2D initial = compose(inverse(local_to_global), g);  // in the submap's frame
-      if (!use_wide && overlap(*sub.grid, node.points, initial) < config.loop_min_overlap) continue;
+      const double distance = std::hypot(c.x() - g.x, c.y() - g.y);
+      if (distance > config.loop_max_distance) continue;
+      const Pose2D initial = compose(inverse(local_to_global), g);
+      if (use_wide) {
+        wide_list.push_back({s, true, distance, initial});
+      } else if (overlap(*sub.grid, node.points, initial) >= config.loop_min_overlap) {
+        near_list.push_back({s, false, distance, initial});
+      }
+    }
+    // The nearest few submaps are enough to tie the node in; searching every one costs.
+    std::sort(near_list.begin(), near_list.end(),
+              [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
+    if (near_list.size() > config.loop_max_submaps) near_list.resize(config.loop_max_submaps);
+    near_list.insert(near_list.end(), wide_list.begin(), wide_list.end());
+    for (const Candidate& cand : near_list) {
+      const std::size_t s = cand.submap;
+      Submap& sub = submaps[s];
+      const bool use_wide = cand.wide;
+      const Pose2D initial = cand.initial;
+      const Pose2D la = nodes[sub.anchor].local;
       stats.loop_searches++;
       const std::optional<ScanMatch2D> m = sub.matcher->match(
-          node.points, initial, use_wide ? config.wide_linear_window : config.loop_linear_window,
+          coarse, initial, use_wide ? config.wide_linear_window : config.loop_linear_window,
           (use_wide ? config.wide_angular_window_deg : config.loop_angular_window_deg) * kPi /
               180.0,
           config.loop_min_score);
@@ -267,6 +304,7 @@ struct Slam2D::Impl {
           graph.addEdge(sub.anchor, n, compose(inverse(la), refined.pose), loop_information, true);
       loops.push_back({n, s, sub.anchor, refined.score, e});
       stats.loops_found++;
+      last_loop_node = n;
       loops_since_optimization = true;
     }
     stats.loop_seconds += since(t0);

@@ -45,10 +45,12 @@ struct Slam2DConfig {
   /// window below, once in `wide_every_n_nodes` nodes, without the overlap condition: the
   /// closing of a large loop, where the drift exceeds the near window.
   std::size_t wide_min_node_gap = 300;
-  std::size_t wide_every_n_nodes = 15;    ///< (>= 1)
+  std::size_t wide_every_n_nodes = 15;  ///< (>= 1)
+  /// ... and only when no loop was closed in this many nodes (0: always).
+  std::size_t wide_idle_nodes = 30;
   double wide_linear_window = 6.0;        ///< m (> 0)
   double wide_angular_window_deg = 25.0;  ///< deg (> 0)
-  std::size_t loop_every_n_nodes = 3;     ///< nodes searched: one in this many (>= 1)
+  std::size_t loop_every_n_nodes = 5;     ///< nodes searched: one in this many (>= 1)
   /// Submaps that received a node fewer than this many nodes ago are not searched (0: all
   /// finished submaps are; on the Intel log, skipping the recent ones cost accuracy).
   std::size_t loop_min_node_gap = 0;
@@ -58,16 +60,19 @@ struct Slam2DConfig {
   /// After each optimisation, loop edges whose chi² exceeds this are removed as false matches
   /// (> 0; chi² of 3 degrees of freedom: 11.3 is its 99 % point).
   double loop_max_chi2 = 100.0;
-  int branch_and_bound_depth = 7;  ///< levels of the multi-resolution grids (1..16)
+  /// The near search takes the nearest this many submaps that pass the overlap test (>= 1).
+  std::size_t loop_max_submaps = 2;
+  std::size_t loop_search_points = 90;  ///< points the search scores, at most (>= 10)
+  int branch_and_bound_depth = 7;       ///< levels of the multi-resolution grids (1..16)
 
   // --- pose graph
-  double edge_translation_sigma = 0.02;     ///< m, of the edges between consecutive nodes (> 0)
-  double edge_rotation_sigma_deg = 0.25;    ///< deg (> 0)
-  double loop_translation_sigma = 0.05;     ///< m, of loop edges (> 0)
-  double loop_rotation_sigma_deg = 0.5;     ///< deg (> 0)
-  std::size_t optimize_every_n_nodes = 90;  ///< optimise when loops were added (>= 1)
-  int optimize_iterations = 20;             ///< Levenberg-Marquardt steps while running (>= 1)
-  int final_iterations = 100;               ///< at the end (>= 1)
+  double edge_translation_sigma = 0.02;      ///< m, of the edges between consecutive nodes (> 0)
+  double edge_rotation_sigma_deg = 0.25;     ///< deg (> 0)
+  double loop_translation_sigma = 0.05;      ///< m, of loop edges (> 0)
+  double loop_rotation_sigma_deg = 0.5;      ///< deg (> 0)
+  std::size_t optimize_every_n_nodes = 180;  ///< optimise when loops were added (>= 1)
+  int optimize_iterations = 10;              ///< Levenberg-Marquardt steps while running (>= 1)
+  int final_iterations = 100;                ///< at the end (>= 1)
 
   // --- final map
   /// The map rebuilt from every node at its optimised pose (OctoMap's sensor model by default).

@@ -1,0 +1,161 @@
+// metricmap.grid: OccupancyGrid's kernel on a numpy array; cells as views of the result.
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include <pybind11/stl.h>
+
+#include "arrays.h"
+#include "metricmap/grid/grid_kernel.h"
+
+namespace metricmap::python {
+
+namespace {
+
+GridOrigin parseOrigin(const std::string& origin) {
+  if (origin == "cloud-min") return GridOrigin::CloudMinimum;
+  if (origin == "world") return GridOrigin::WorldAligned;
+  throw py::value_error("origin must be 'cloud-min' or 'world', got '" + origin + "'");
+}
+
+py::dict statisticsDict(const GridStatistics& s) {
+  py::dict d;
+  d["total_cells"] = s.total_cells;
+  d["occupied_cells"] = s.occupied_cells;
+  d["empty_cells"] = s.empty_cells;
+  d["mean_points_per_occupied_cell"] = s.mean_points_per_occupied_cell;
+  d["points"] = s.points;
+  d["skipped_points"] = s.skipped_points;
+  return d;
+}
+
+}  // namespace
+
+void initGrid(py::module_& m) {
+  py::class_<GridResult, std::shared_ptr<GridResult>>(m, "Grid", R"doc(
+The occupied cells of a grid build (see :func:`grid`), in linear-index order (x fastest).
+
+The array properties are read-only views of the cells held by this object; they keep it alive.
+)doc")
+      .def_property_readonly(
+          "statistics", [](const GridResult& r) { return statisticsDict(r.stats); },
+          "dict: total_cells, occupied_cells, empty_cells, mean_points_per_occupied_cell, points, "
+          "skipped_points (the study's figures).")
+      .def_property_readonly(
+          "indices",
+          [](py::object self) {
+            const auto& r = self.cast<const GridResult&>();
+            return viewOf<std::int64_t>(
+                r.cells.empty() ? nullptr : r.cells[0].index.data(),
+                {py::ssize_t(r.cells.size()), 3},
+                {py::ssize_t(sizeof(GridCell)), py::ssize_t(sizeof(std::int64_t))}, self);
+          },
+          "(M, 3) int64 view: integer cell index of each occupied cell.")
+      .def_property_readonly(
+          "counts",
+          [](py::object self) {
+            const auto& r = self.cast<const GridResult&>();
+            return viewOf<std::uint64_t>(r.cells.empty() ? nullptr : &r.cells[0].count,
+                                         {py::ssize_t(r.cells.size())},
+                                         {py::ssize_t(sizeof(GridCell))}, self);
+          },
+          "(M,) uint64 view: points in each occupied cell.")
+      .def_property_readonly(
+          "means",
+          [](py::object self) {
+            const auto& r = self.cast<const GridResult&>();
+            return viewOf<double>(r.cells.empty() ? nullptr : r.cells[0].mean.data(),
+                                  {py::ssize_t(r.cells.size()), 3},
+                                  {py::ssize_t(sizeof(GridCell)), py::ssize_t(sizeof(double))},
+                                  self);
+          },
+          "(M, 3) float64 view: mean of each occupied cell's points, metres.")
+      .def_property_readonly(
+          "first_points",
+          [](py::object self) {
+            const auto& r = self.cast<const GridResult&>();
+            return viewOf<std::size_t>(r.cells.empty() ? nullptr : &r.cells[0].first_point,
+                                       {py::ssize_t(r.cells.size())},
+                                       {py::ssize_t(sizeof(GridCell))}, self);
+          },
+          "(M,) uint64 view: row of the input of each cell's first point.")
+      .def_property_readonly(
+          "min_index",
+          [](const GridResult& r) {
+            return py::make_tuple(r.layout.min_index[0], r.layout.min_index[1],
+                                  r.layout.min_index[2]);
+          },
+          "(ix, iy, iz): index of the lowest cell per axis.")
+      .def_property_readonly(
+          "dims",
+          [](const GridResult& r) {
+            return py::make_tuple(r.layout.dims[0], r.layout.dims[1], r.layout.dims[2]);
+          },
+          "(nx, ny, nz): cells per axis of the bounding volume.")
+      .def_property_readonly(
+          "origin",
+          [](const GridResult& r) {
+            return py::make_tuple(r.layout.origin.x(), r.layout.origin.y(), r.layout.origin.z());
+          },
+          "(x, y, z): world position of cell index (0, 0, 0), metres.")
+      .def_property_readonly(
+          "cell_size", [](const GridResult& r) { return r.layout.cell_size; }, "Cell edge, metres.")
+      .def("__len__", [](const GridResult& r) { return r.cells.size(); })
+      .def("__repr__", [](const GridResult& r) {
+        return "<metricmap.Grid " + std::to_string(r.cells.size()) + " occupied of " +
+               std::to_string(r.stats.total_cells) + " cells>";
+      });
+
+  m.def(
+      "grid",
+      [](ArrayLike points, float cell_size, const std::string& origin, unsigned threads) {
+        validateCellSize(cell_size);
+        GridParams params;
+        params.cell_size = cell_size;
+        params.origin = parseOrigin(origin);
+        params.threads = threads;
+        PointsArray p = pointsFromArray(points, "points");
+        auto result = std::make_shared<GridResult>();
+        {
+          py::gil_scoped_release release;
+          GridWorkspace workspace;
+          buildGrid(p.span, params, workspace, *result);
+        }
+        return result;
+      },
+      py::arg("points"), py::arg("cell_size") = 1.0f, py::arg("origin") = "cloud-min",
+      py::arg("threads") = 0u, R"doc(
+Bin points into cubic cells: per occupied cell its index, count and mean (OccupancyGrid).
+
+Parameters
+----------
+points : array_like, shape (N, 3) or (N, 4)
+    x, y, z (and a fourth column, ignored) in metres. C-contiguous float32 (N, 4) or (N, 3)
+    is read in place; any other real dtype or layout is converted to float32 once.
+    Points with a NaN/Inf coordinate are skipped and counted.
+cell_size : float
+    Cell edge in metres, finite and > 0.
+origin : {'cloud-min', 'world'}
+    'cloud-min' (the study's partition): index = floor((p - min) / cell_size);
+    'world' (pcl::VoxelGrid's): index = floor(p * (1 / cell_size)) in float32.
+threads : int
+    0 = all hardware threads. The result does not depend on it.
+
+Returns
+-------
+Grid
+    statistics, and per-cell arrays (views): indices (M, 3) int64, counts (M,) uint64,
+    means (M, 3) float64, first_points (M,) uint64.
+
+Raises
+------
+ValueError
+    bad cell size or origin, wrong shape, no rows.
+TypeError
+    a non-numeric dtype.
+CapacityError
+    the bounding volume has 2**64 cells or more.
+)doc");
+}
+
+}  // namespace metricmap::python

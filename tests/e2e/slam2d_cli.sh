@@ -1,0 +1,110 @@
+#!/usr/bin/env bash
+# metricmap slam2d on the raw Intel Research Lab log (13631 scans): the trajectory agrees with the
+# corrected Intel log (910 scans, an independent SLAM run; scans matched by their ranges) far
+# better than the raw odometry does; outputs are consistent with the log and with each other;
+# bad input and bad options are refused with nothing written.
+MM=$1
+SHARED=$3
+source "$(dirname "$0")/lib.sh"
+raw=$SHARED/radish_clf_raw/intel.clf.bz2
+cor=$SHARED/radish_carmen_corrected/intel-corrected.log.gz
+if [ ! -f "$raw" ] || [ ! -f "$cor" ]; then echo "skip: Radish logs missing"; exit 0; fi
+"$MM" slam2d "$raw" --out-poses "$tmp/p.tum" --out-map "$tmp/m.pgm" --out-graph "$tmp/g.g2o" \
+  --out-png "$tmp/m.png" --format json >"$tmp/r.json"
+check "all outputs written" test -s "$tmp/p.tum" -a -s "$tmp/m.pgm" -a -s "$tmp/m.yaml" \
+  -a -s "$tmp/g.g2o" -a -s "$tmp/m.png"
+# ATE after a rigid 2D alignment (Umeyama, no scale), mean over the corrected log's scans.
+ate() {  # ate TRAJECTORY|odom
+  /usr/bin/python3 - "$raw" "$cor" "$1" <<'PY'
+import sys, bz2, gzip, numpy as np
+raw = [l.split() for l in bz2.open(sys.argv[1], 'rt') if l.startswith('FLASER')]
+key = {}
+for i, t in enumerate(raw):
+    n = int(t[1]); key.setdefault(tuple(round(float(x) * 100) for x in t[2:2 + n]), i)
+pairs = []
+for l in gzip.open(sys.argv[2], 'rt'):
+    if not l.startswith('FLASER'): continue
+    t = l.split(); n = int(t[1]); k = tuple(round(float(x) * 100) for x in t[2:2 + n])
+    if k in key: pairs.append((key[k], float(t[2 + n]), float(t[3 + n])))
+assert len(pairs) == 910, len(pairs)
+if sys.argv[3] == 'odom':
+    est = np.array([[float(t[5 + int(t[1])]), float(t[6 + int(t[1])])] for t in raw])
+else:  # rows in stamp order: each scan's row found by its stamp
+    rows = np.loadtxt(sys.argv[3]); where = {round(s, 6): k for k, s in enumerate(rows[:, 0])}
+    est = np.array([rows[where[round(float(t[-3]), 6)], 1:3] for t in raw])
+idx = np.array([p[0] for p in pairs]); ref = np.array([p[1:] for p in pairs]); e = est[idx]
+H = (e - e.mean(0)).T @ (ref - ref.mean(0)); U, S, Vt = np.linalg.svd(H)
+D = np.diag([1, np.sign(np.linalg.det(Vt.T @ U.T))]); R = Vt.T @ D @ U.T
+d = np.linalg.norm((R @ (e - e.mean(0)).T).T + ref.mean(0) - ref, axis=1)
+print(d.mean())
+PY
+}
+slam=$(ate "$tmp/p.tum")
+odom=$(ate odom)
+echo "ATE against the corrected log: slam2d $slam m, raw odometry $odom m"
+check "slam2d within 0.4 m of the corrected log on average" \
+  /usr/bin/python3 -c "assert $slam < 0.4, $slam"
+check "the raw odometry is far worse (> 5 m), as published" \
+  /usr/bin/python3 -c "assert $odom > 5 and $odom > 10 * $slam, ($odom, $slam)"
+check "one TUM row per scan, with the log's own stamps, in stamp order" /usr/bin/python3 -c "
+import bz2, numpy as np
+st = sorted(float(l.split()[-3]) for l in bz2.open('$raw', 'rt') if l.startswith('FLASER'))
+p = np.loadtxt('$tmp/p.tum'); assert p.shape == (len(st), 8), p.shape
+assert np.all(np.abs(p[:, 0] - st) < 1e-5) and np.all(p[:, 3] == 0), 'stamps or z'"
+check "report: loops kept, scans = nodes' scans, the graph has a vertex per node" /usr/bin/python3 -c "
+import json; j = json.load(open('$tmp/r.json'))
+assert j['scans'] == 13631 and j['loop_closures']['kept'] > 100, j
+v = sum(1 for l in open('$tmp/g.g2o') if l.startswith('VERTEX_SE2'))
+e = sum(1 for l in open('$tmp/g.g2o') if l.startswith('EDGE_SE2'))
+assert v == j['nodes'] and e == j['nodes'] - 1 + j['loop_closures']['kept'], (v, e, j)"
+# The benchmark's relation metric through `metricmap evaluate`: relations between corrected
+# scans 100 apart (their true relative pose from the corrected log, their stamps the raw log's).
+/usr/bin/python3 - "$raw" "$cor" "$tmp" <<'PY'
+import sys, bz2, gzip, numpy as np
+raw = [l.split() for l in bz2.open(sys.argv[1], 'rt') if l.startswith('FLASER')]
+key = {}
+for t in raw:
+    n = int(t[1]); key.setdefault(tuple(round(float(x) * 100) for x in t[2:2 + n]), t)
+m = []
+for l in gzip.open(sys.argv[2], 'rt'):
+    if not l.startswith('FLASER'): continue
+    t = l.split(); n = int(t[1]); r = key[tuple(round(float(x) * 100) for x in t[2:2 + n])]
+    m.append((float(r[-3]), float(t[2 + n]), float(t[3 + n]), float(t[4 + n])))
+with open(sys.argv[3] + '/rel.txt', 'w') as f:
+    for a, b in zip(m, m[100:]):
+        c, s = np.cos(a[3]), np.sin(a[3]); dx, dy = b[1] - a[1], b[2] - a[2]
+        f.write('%.6f %.6f %.6f %.6f 0 0 0 %.9f\n' % (a[0], b[0], c * dx + s * dy, -s * dx + c * dy,
+                (b[3] - a[3] + np.pi) % (2 * np.pi) - np.pi))
+rows = sorted((float(t[-3]), float(t[5 + int(t[1])]), float(t[6 + int(t[1])]), float(t[7 + int(t[1])])) for t in raw)
+with open(sys.argv[3] + '/odom.tum', 'w') as f:
+    for st, x, y, th in rows:
+        f.write('%.6f %.6f %.6f 0 0 0 %.9f %.9f\n' % (st, x, y, np.sin(th / 2), np.cos(th / 2)))
+PY
+"$MM" evaluate "$tmp/p.tum" --relations "$tmp/rel.txt" --max-time-diff 0.0001 --format json >"$tmp/rs.json"
+"$MM" evaluate "$tmp/odom.tum" --relations "$tmp/rel.txt" --max-time-diff 0.0001 --format json >"$tmp/ro.json"
+check "relations (scans 100 apart): slam2d's error far below the raw odometry's" /usr/bin/python3 -c "
+import json; s = json.load(open('$tmp/rs.json')); o = json.load(open('$tmp/ro.json'))
+print('slam2d', s['abs_translation_m'], s['abs_rotation_deg']); print('odometry', o['abs_translation_m'], o['abs_rotation_deg'])
+assert s['relations']['used'] == 810 and o['relations']['used'] == 810, (s['relations'], o['relations'])
+assert 5 * s['abs_translation_m']['mean'] < o['abs_translation_m']['mean'], (s, o)
+assert 5 * s['abs_rotation_deg']['mean'] < o['abs_rotation_deg']['mean'], (s, o)"
+check "the map's YAML matches its PGM" /usr/bin/python3 -c "
+d = open('$tmp/m.yaml').read(); assert 'resolution: 0.05' in d and 'image: m.pgm' in d, d"
+
+# Bad input: one line naming the file, exit 1, nothing written.
+bzcat "$raw" | head -c 200000 >"$tmp/cut.clf"
+printf 'FLASER 3 1 2\n' >>"$tmp/cut.clf"
+head -c 5000 /dev/urandom >"$tmp/garbage.clf"
+printf 'FLASER 180 nan\n' >"$tmp/nan.clf"
+expect 1 "garbage.clf" -- "$MM" slam2d "$tmp/garbage.clf" --out-poses "$tmp/x.tum"
+expect 1 "nan.clf" -- "$MM" slam2d "$tmp/nan.clf" --out-poses "$tmp/x.tum"
+expect 1 "slam2d needs 2D laser scans" -- "$MM" slam2d "$DATA_DIR/kitti_odometry_00" --out-poses "$tmp/x.tum"
+expect 2 "--out-map" -- "$MM" slam2d "$tmp/cut.clf" --out-map "$tmp/x.png"
+expect 2 "--out-poses" -- "$MM" slam2d "$tmp/cut.clf" --out-poses "$tmp/cut.clf"
+expect 2 "--loop-window" -- "$MM" slam2d "$tmp/cut.clf" --no-loop-closure --loop-window 3
+expect 2 "--map-resolution" -- "$MM" slam2d "$tmp/cut.clf" --map-resolution 0
+expect 2 "--max-range" -- "$MM" slam2d "$tmp/cut.clf" --max-range nan
+check "nothing written after a refusal" test ! -e "$tmp/x.tum" -a ! -e "$tmp/x.png"
+"$MM" slam2d "$tmp/cut.clf" --out-poses "$tmp/cut.tum" >"$tmp/cut.txt" 2>&1
+check "a log cut mid-line: its whole scans mapped, the cut line skipped" grep -q "scans" "$tmp/cut.txt"
+finish
