@@ -116,14 +116,25 @@ void run(const Slam2DOptions& o) {
     if (!scan.laser) throw InputError(scan.name + ": not a 2D laser scan");
     std::optional<Pose2D> odometry;
     if (scan.odometry) odometry = planar(*scan.odometry);
-    slam.addScan(*scan.laser, odometry, scan.stamp);
+    try {
+      slam.addScan(*scan.laser, odometry, scan.stamp);
+    } catch (const CapacityError& e) {  // the maps outgrew the budget: name the scan
+      throw CapacityError(scan.name + ": " + e.what());
+    }
     trajectory.stamps.push_back(scan.stamp);
     if (progress && (k % 250 == 0 || k + 1 == frames.size()))
       std::fprintf(stderr, "\rslam2d: scan %zu of %zu, %zu nodes, %zu loop closures", k + 1,
                    frames.size(), slam.stats().nodes, slam.loops().size());
   }
   if (progress) std::fprintf(stderr, "\n");
-  slam.finish();
+  try {
+    slam.finish();
+  } catch (const CapacityError& e) {
+    throw CapacityError(o.source.path + ": " + e.what());
+  }
+  if (slam.map().knownCells() == 0)
+    throw InputError(o.source.path + ": no beam within --max-range " +
+                     plainNumber(config.max_range) + " m: the map is empty");
   for (const Pose2D& p : slam.trajectory()) trajectory.poses.push_back(spatial(p));
   if (!std::all_of(trajectory.stamps.begin(), trajectory.stamps.end(),
                    [](double s) { return std::isfinite(s); }))
@@ -174,7 +185,7 @@ void run(const Slam2DOptions& o) {
       "final chi2 %.6g\n"
       "map: %zu occupied, %zu free cells of %.3g m\n"
       "time: %.2f s (read %.2f, local %.2f, insert %.2f, loop search %.2f, optimise "
-      "%.2f, map %.2f, write %.2f) for %.1f s of log: %.0fx real time\n",
+      "%.2f, map %.2f, write %.2f) for %.6g s of log: %.3gx real time\n",
       o.source.path.c_str(), s.scans, s.nodes, s.submaps, s.loops_found, s.loop_searches,
       s.loops_rejected, s.optimizations, s.final_chi2, slam.map().occupiedCells(),
       slam.map().freeCells(), config.map.resolution, total, read_seconds, s.local_seconds,
@@ -238,6 +249,7 @@ void addSlam2DCommand(CLI::App& app) {
     requireDistinctFiles(sourceInputs(o->source), outputs);
     requireExtension("--out-map", o->out_map, {".pgm"}, "a map_server PGM");
     requireExtension("--out-graph", o->out_graph, {".g2o"}, "a g2o graph");
+    requireExtension("--out-poses", o->out_poses, {".tum", ".txt"}, "a TUM trajectory");
     requireExtension("--out-png", o->out_png, {".png"}, "a PNG picture");
     run(*o);
   });

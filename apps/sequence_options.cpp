@@ -1,9 +1,11 @@
 #include "sequence_options.h"
 
 #include <filesystem>
+#include <iostream>
 
 #include "metricmap/common/format_number.h"
 #include "metricmap/common/parse_number.h"
+#include "metricmap/datasets/carmen_source.h"
 #include "metricmap/datasets/folder_source.h"
 #include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/exceptions.h"
@@ -41,7 +43,12 @@ void checkSourceOptions(const CLI::App& app, const SourceOptions& o) {
     refuseIgnored(app, option, kind != "carmen",
                   "on a CARMEN log: its lines carry the scans' stamps and odometry poses");
   }
-  if (o.frames.empty()) return;
+  if (o.frames.empty()) {
+    if (app.count("--frames") > 0)
+      throw CLI::ValidationError("--frames",
+                                 "the frame list is empty (omit --frames for all frames)");
+    return;
+  }
   std::vector<std::size_t> f;
   try {
     f = parseFrameList(o.frames);
@@ -94,7 +101,11 @@ std::unique_ptr<ScanSource> openSource(const SourceOptions& o) {
   so.sequence = o.sequence;
   so.reference_poses = o.reference;
   so.times = o.times;
-  return openScanSource(o.path, so);
+  std::unique_ptr<ScanSource> source = openScanSource(o.path, so);
+  // Lines a log source skipped are reported, never dropped silently.
+  if (const auto* carmen = dynamic_cast<const CarmenSource*>(source.get()))
+    for (const std::string& w : carmen->warnings()) std::cerr << "warning: " << w << "\n";
+  return source;
 }
 
 std::vector<std::size_t> selectedFrames(const SourceOptions& o, const ScanSource& source) {

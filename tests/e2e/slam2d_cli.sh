@@ -104,7 +104,22 @@ expect 2 "--out-poses" -- "$MM" slam2d "$tmp/cut.clf" --out-poses "$tmp/cut.clf"
 expect 2 "--loop-window" -- "$MM" slam2d "$tmp/cut.clf" --no-loop-closure --loop-window 3
 expect 2 "--map-resolution" -- "$MM" slam2d "$tmp/cut.clf" --map-resolution 0
 expect 2 "--max-range" -- "$MM" slam2d "$tmp/cut.clf" --max-range nan
-check "nothing written after a refusal" test ! -e "$tmp/x.tum" -a ! -e "$tmp/x.png"
+bzcat "$raw" | grep -m 40 '^FLASER' >"$tmp/s40.clf"
+awk '{for(i=3;i<=182;i++)$i="0"}1' "$tmp/s40.clf" >"$tmp/zero.clf"
+awk 'NR==10{$186="1e300"}1' "$tmp/s40.clf" >"$tmp/odohuge.clf"
+expect 1 "zero.clf: no beam within --max-range" -- "$MM" slam2d "$tmp/zero.clf" --out-map "$tmp/x.pgm"
+expect 1 "odohuge.clf: line 10" -- "$MM" slam2d "$tmp/odohuge.clf" --out-poses "$tmp/x.tum"
+expect 2 "--frames" -- "$MM" slam2d "$tmp/s40.clf" --frames "" --out-poses "$tmp/x.tum"
+expect 2 "--out-poses" -- "$MM" slam2d "$tmp/s40.clf" --out-poses "$tmp/x.pcd"
+check "nothing written after a refusal" test ! -e "$tmp/x.tum" -a ! -e "$tmp/x.png" -a ! -e "$tmp/x.pgm" -a ! -e "$tmp/x.pcd"
+awk 'NR%2==0{sub(/^FLASER 180 /,"FLASER 181 ")}1' "$tmp/s40.clf" >"$tmp/mixed.clf"
+"$MM" slam2d "$tmp/mixed.clf" --out-poses "$tmp/mixed.tum" >/dev/null 2>"$tmp/mixed.err"
+check "lines with the wrong beam count: skipped and warned about" grep -q "mixed.clf: skipped 20 malformed" "$tmp/mixed.err"
+check "... and the trajectory holds the 20 whole scans" test "$(wc -l <"$tmp/mixed.tum")" = 20
+awk 'NR==10{$189="1e300"}1' "$tmp/s40.clf" >"$tmp/stamp.clf"
+"$MM" slam2d "$tmp/stamp.clf" --out-poses "$tmp/stamp.tum" >/dev/null
+check "a huge stamp is written whole (8 fields on every row)" \
+  test "$(awk 'NF != 8' "$tmp/stamp.tum" | wc -l)" = 0
 "$MM" slam2d "$tmp/cut.clf" --out-poses "$tmp/cut.tum" >"$tmp/cut.txt" 2>&1
 check "a log cut mid-line: its whole scans mapped, the cut line skipped" grep -q "scans" "$tmp/cut.txt"
 finish

@@ -167,7 +167,8 @@ std::string formatTumTrajectory(const Trajectory& trajectory) {
     if (q.w() < 0.0) q.coeffs() = -q.coeffs();
     const Eigen::Vector3d t = pose.translation();
     const double stamp = trajectory.hasStamps() ? trajectory.stamps[i] : static_cast<double>(i);
-    char line[256];
+    // %.9f of a stamp up to 1.8e308 takes 320 characters: the buffer holds every finite value.
+    char line[512];
     std::snprintf(line, sizeof line, "%.9f %.9e %.9e %.9e %.9e %.9e %.9e %.9e\n", stamp, t.x(),
                   t.y(), t.z(), q.x(), q.y(), q.z(), q.w());
     text += line;
