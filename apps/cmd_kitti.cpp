@@ -324,17 +324,12 @@ void run(const KittiOptions& o, const CLI::App& app) {
     const std::vector<double> band = parseDoubleList(o.band, "--band");
     const TrinaryMap t = projectBand(*occupancy, band.at(0), band.at(1));
     MapServerFiles files = mapServerFiles(o.out_trinary);
-    files.pgm = outputs.stage(files.pgm);
-    files.yaml = outputs.stage(files.yaml);
     files.preview_png.clear();
-    writeMapServer(mapServerImage(t), files);
+    writeMapServer(mapServerImage(t), files, outputs);
   }
   if (!o.out_map.empty()) {
-    MapServerFiles files = mapServerFiles(o.out_map);
-    for (std::string* path : {&files.pgm, &files.yaml, &files.preview_png, &files.heat_png}) {
-      *path = outputs.stage(*path);
-    }
-    writeMapServer(mapServerImage(image, mapper.config().min_hits), files, heatImage(image));
+    writeMapServer(mapServerImage(image, mapper.config().min_hits), mapServerFiles(o.out_map),
+                   outputs, heatImage(image));
   }
   const std::size_t occupied = mapper.occupiedCells();
   const double write_s = secondsSince(t);

@@ -279,11 +279,8 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
     savePcdAtomic(outputs.stage(o.out_cloud), occupiedCenters(map), parsePcdFormat(o.pcd_format));
   if (!o.out_map.empty()) {
     MapServerFiles files = mapServerFiles(o.out_map);
-    files.pgm = outputs.stage(files.pgm);
-    files.yaml = outputs.stage(files.yaml);
-    files.preview_png = o.map_preview.empty() ? "" : outputs.stage(o.map_preview);
-    files.heat_png.clear();
-    writeMapServer(mapServerImage(trinary), files);
+    files.preview_png = o.map_preview;
+    writeMapServer(mapServerImage(trinary), files, outputs);
   }
   tot.write_s = secondsSince(t);
 

@@ -74,11 +74,8 @@ void writeOutputs(const Slam2DOptions& o, const Slam2D& slam, const Trajectory& 
   const MapServerImage image = slam.map().trinaryImage();
   if (!o.out_map.empty()) {
     MapServerFiles files = mapServerFiles(o.out_map);
-    files.pgm = outputs.stage(files.pgm);
-    files.yaml = outputs.stage(files.yaml);
     files.preview_png.clear();
-    files.heat_png.clear();
-    writeMapServer(image, files);
+    writeMapServer(image, files, outputs);
   }
   if (o.out_png.empty()) return;
   std::vector<Eigen::Vector2d> path;

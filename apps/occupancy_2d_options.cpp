@@ -68,11 +68,8 @@ nlohmann::json writeOccupancy2D(const ScanMapper& maps, const Occupancy2DOptions
   const MapServerImage image =
       o.image == "probability" ? grid->probabilityImage() : grid->trinaryImage();
   MapServerFiles files = mapServerFiles(o.out);
-  files.pgm = outputs.stage(files.pgm);
-  files.yaml = outputs.stage(files.yaml);
   files.preview_png.clear();
-  files.heat_png.clear();
-  writeMapServer(image, files);
+  writeMapServer(image, files, outputs);
   return {{"width", image.width},
           {"height", image.height},
           {"resolution", image.resolution},

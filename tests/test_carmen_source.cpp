@@ -19,6 +19,7 @@
 #include "metricmap/io/carmen_log.h"
 #include "metricmap/io/laser_scan.h"
 #include "metricmap/io/text_stream.h"
+#include "scratch_files.h"
 #include "temp_dir.h"
 
 namespace metricmap {
@@ -220,15 +221,7 @@ TEST(CarmenSource, GzipAndPlainCopiesReadTheSame) {
   EXPECT_EQ(readScanLog(csv).scans.at(0).ranges.size(), 154u);
 }
 
-template <typename F>
-std::string inputErrorOf(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
+using test_support::inputErrorOf;
 
 TEST(CarmenSource, DamagedStreamsNameTheFile) {
   const std::string bz2 = radish("mit-csail.clf.bz2");

@@ -45,4 +45,12 @@ void writeMapServer(const MapServerImage& image, const MapServerFiles& files,
     writePng(files.heat_png, image.width, image.height, 3, heat_rgb);
 }
 
+void writeMapServer(const MapServerImage& image, MapServerFiles files, OutputSet& outputs,
+                    const std::vector<std::uint8_t>& heat_rgb) {
+  if (heat_rgb.empty()) files.heat_png.clear();
+  for (std::string* path : {&files.pgm, &files.yaml, &files.preview_png, &files.heat_png})
+    if (!path->empty()) *path = outputs.stage(*path);
+  writeMapServer(image, files, heat_rgb);
+}
+
 }  // namespace metricmap

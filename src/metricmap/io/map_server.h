@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "metricmap/common/map_server_image.h"
+#include "metricmap/io/output_set.h"
 
 namespace metricmap {
 
@@ -26,6 +27,12 @@ MapServerFiles mapServerFiles(const std::string& pgm_path);
 /// path and `heat_rgb` are not empty. Each file through a temporary name and a rename.
 /// \throws std::invalid_argument for an empty image or a pixel count that is not width x height
 void writeMapServer(const MapServerImage& image, const MapServerFiles& files,
+                    const std::vector<std::uint8_t>& heat_rgb = {});
+
+/// \brief writeMapServer into `outputs`: the PGM and YAML, the preview when `files.preview_png` is
+/// not empty and the heat map when both its path and `heat_rgb` are not, each staged (renamed
+/// into place when `outputs` commits).
+void writeMapServer(const MapServerImage& image, MapServerFiles files, OutputSet& outputs,
                     const std::vector<std::uint8_t>& heat_rgb = {});
 
 }  // namespace metricmap
