@@ -8,6 +8,8 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "metricmap/datasets/scan_source.h"
+#include "metricmap/datasets/source_odometry.h"
 #include "metricmap/evaluation/relation_error.h"
 #include "metricmap/evaluation/rotation_angle.h"
 #include "metricmap/evaluation/trajectory_evaluation.h"
@@ -20,7 +22,7 @@ namespace metricmap::cli {
 namespace {
 
 struct EvaluateOptions {
-  std::string estimate, reference, relations, align = "rigid", format = "table";
+  std::string estimate, reference, relations, odometry, align = "rigid", format = "table";
   std::string est_format = "auto", ref_format = "auto";
   double max_time_diff = 0.01;
   bool per_frame = false;
@@ -166,11 +168,27 @@ std::string runRelations(const EvaluateOptions& o) {
                      "estimate in TUM form");
   }
   const std::vector<PoseRelation> relations = readRelations(o.relations);
-  const RelationError e = relationError(est.trajectory, relations, o.max_time_diff);
+  // The log's raw odometry places relation stamps the estimate lacks (a CARMEN log, or a
+  // trajectory file with stamps).
+  Trajectory odometry;
+  if (!o.odometry.empty()) {
+    if (scanSourceKind(o.odometry, "auto") == "carmen") {
+      odometry = sourceOdometry(*openScanSource(o.odometry));
+    } else {
+      odometry = load(o.odometry, "auto").trajectory;
+      if (!odometry.hasStamps())
+        throw InputError(o.odometry +
+                         ": no time stamps (KITTI form); --odometry needs a CARMEN "
+                         "log or a TUM trajectory");
+    }
+  }
+  const RelationError e = relationError(est.trajectory, relations, o.max_time_diff,
+                                        o.odometry.empty() ? nullptr : &odometry);
   if (e.used == 0) {
     throw InputError(o.relations + ": none of its " + std::to_string(relations.size()) +
                      " relations has both stamps within " + num(o.max_time_diff) +
-                     " s of a stamp of " + o.estimate);
+                     " s of a stamp of " + o.estimate +
+                     (o.odometry.empty() ? "" : " or within the span of " + o.odometry));
   }
   const std::pair<const char*, const MeanAndStd*> rows[] = {
       {"abs_translation_m", &e.translation_abs},
@@ -184,6 +202,7 @@ std::string runRelations(const EvaluateOptions& o) {
                           {"count", relations.size()},
                           {"used", e.used},
                           {"skipped", e.skipped.size()},
+                          {"stamps_placed_by_odometry", e.interpolated},
                           {"max_time_diff_s", o.max_time_diff}}}};
     nlohmann::json skipped = nlohmann::json::array();
     for (std::size_t k : e.skipped)
@@ -193,11 +212,15 @@ std::string runRelations(const EvaluateOptions& o) {
     for (const auto& [name, v] : rows) j[name] = {{"mean", v->mean}, {"std", v->stddev}};
     return j.dump(2) + "\n";
   }
-  std::string out = "estimate:  " + est.line + "\nrelations: " + o.relations + " (" +
-                    std::to_string(relations.size()) + " relations: " + std::to_string(e.used) +
-                    " used, " + std::to_string(e.skipped.size()) +
-                    " skipped, their stamps not within " + num(o.max_time_diff) +
-                    " s of the estimate's)\n\n";
+  std::string out =
+      "estimate:  " + est.line + "\nrelations: " + o.relations + " (" +
+      std::to_string(relations.size()) + " relations: " + std::to_string(e.used) + " used, " +
+      std::to_string(e.skipped.size()) + " skipped, their stamps not within " +
+      num(o.max_time_diff) + " s of the estimate's" +
+      (o.odometry.empty() ? ""
+                          : " nor placed by the odometry; " + std::to_string(e.interpolated) +
+                                " stamps placed by the odometry") +
+      ")\n\n";
   Table t({"metric", "mean", "std"});
   for (const auto& [name, v] : rows) t.addRow({name, num(v->mean), num(v->stddev)});
   return out + t.render(TableStyle::Aligned);
@@ -214,6 +237,10 @@ void addEvaluateCommand(CLI::App& app) {
   auto* rel = sub->add_option("--relations", o->relations,
                               "Relations file 't1 t2 x y z roll pitch yaw' (Kümmerle et al. 2009)")
                   ->excludes(ref);
+  sub->add_option("--odometry", o->odometry,
+                  "With --relations: the raw odometry (a CARMEN log or a TUM file) that places "
+                  "relation stamps the estimate lacks")
+      ->check(CLI::ExistingFile);
   sub->add_option("--align", o->align, "Alignment before ATE and RPE (Umeyama: SE3 or Sim3)")
       ->check(CLI::IsMember({"none", "rigid", "sim"}))
       ->capture_default_str()
@@ -241,6 +268,7 @@ void addEvaluateCommand(CLI::App& app) {
                   o->relations.empty() ? "with --format json: the JSON always holds the RPE of "
                                          "every frame (rpe.per_frame)"
                                        : "with --relations: the relation metric has no frames");
+    refuseIgnored(*sub, "--odometry", !o->relations.empty(), "without --relations");
     emit(o->relations.empty() ? runReference(*o, *sub) : runRelations(*o), "");
   });
 }

@@ -7,12 +7,14 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <numeric>
 
 #include <nlohmann/json.hpp>
 
 #include "cli_common.h"
 #include "commands.h"
+#include "metricmap/common/parse_number.h"
+#include "metricmap/common/pose_2d_spatial.h"
+#include "metricmap/evaluation/trajectory_order.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/array_writers.h"
 #include "metricmap/io/cloud_writer.h"
@@ -22,6 +24,7 @@
 #include "metricmap/io/trajectory.h"
 #include "metricmap/posegraph/g2o_io.h"
 #include "metricmap/slam/slam_2d.h"
+#include "metricmap/slam/slam_2d_parameters.h"
 #include "sequence_options.h"
 
 namespace metricmap::cli {
@@ -31,39 +34,9 @@ struct Slam2DOptions {
   SourceOptions source;
   std::string out_poses, out_map, out_graph, out_png, format = "table";
   Slam2DConfig config;
+  std::vector<std::string> set;  ///< NAME=VALUE
   bool no_loops = false;
 };
-
-Pose2D planar(const Eigen::Isometry3d& t) {
-  return {t.translation().x(), t.translation().y(), std::atan2(t(1, 0), t(0, 0))};
-}
-
-Eigen::Isometry3d spatial(const Pose2D& p) {
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.translation() << p.x, p.y, 0.0;
-  t.linear() = Eigen::Matrix3d(Eigen::AngleAxisd(p.theta, Eigen::Vector3d::UnitZ()));
-  return t;
-}
-
-/// TUM rows in stamp order: raw logs deliver scans out of order (the Intel log steps back 631
-/// times), and a TUM file's stamps increase. \throws InputError for two scans with one stamp
-Trajectory inStampOrder(const Trajectory& t, const std::string& path) {
-  std::vector<std::size_t> order(t.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return t.stamps[a] < t.stamps[b]; });
-  Trajectory sorted;
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    if (k > 0 && t.stamps[order[k]] == t.stamps[order[k - 1]])
-      throw InputError(path + ": scans " + std::to_string(order[k - 1]) + " and " +
-                       std::to_string(order[k]) +
-                       " have the same stamp; --out-poses (TUM) needs "
-                       "one pose per stamp");
-    sorted.stamps.push_back(t.stamps[order[k]]);
-    sorted.poses.push_back(t.poses[order[k]]);
-  }
-  return sorted;
-}
 
 void writeOutputs(const Slam2DOptions& o, const Slam2D& slam, const Trajectory& trajectory,
                   OutputSet& outputs) {
@@ -80,14 +53,56 @@ void writeOutputs(const Slam2DOptions& o, const Slam2D& slam, const Trajectory& 
   if (o.out_png.empty()) return;
   std::vector<Eigen::Vector2d> path;
   for (const auto& v : slam.graph().vertices()) path.emplace_back(v.pose.x, v.pose.y);
+  // Loop edges from the centre of the submap matched (its anchor, the edge's other end, is
+  // the submap's first node: lines from there cross the whole map).
   std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> links;
+  const std::vector<Eigen::Vector2d> centres = slam.submapCentres();
   for (const LoopClosure2D& l : slam.loops()) {
-    const Pose2D a = slam.graph().vertex(l.anchor).pose, b = slam.graph().vertex(l.node).pose;
-    links.emplace_back(Eigen::Vector2d(a.x, a.y), Eigen::Vector2d(b.x, b.y));
+    const Pose2D b = slam.graph().vertex(l.node).pose;
+    links.emplace_back(centres[l.submap], Eigen::Vector2d(b.x, b.y));
   }
   const int scale = image.width * image.height < 4000000 ? 2 : 1;
   writePng(outputs.stage(o.out_png), image.width * scale, image.height * scale, 3,
            drawMapPicture(image, scale, path, links));
+}
+
+/// --set NAME=VALUE onto the configuration: each name once, not also given by its own option,
+/// no loop parameter with --no-loop-closure; the whole configuration valid.
+void applySettings(const CLI::App& app, Slam2DOptions& o) {
+  static const std::vector<std::pair<std::string, std::string>> own = {
+      {"map_resolution", "--map-resolution"},
+      {"resolution", "--resolution"},
+      {"max_range", "--max-range"},
+      {"scans_per_submap", "--scans-per-submap"},
+      {"loop_min_score", "--loop-min-score"},
+      {"loop_linear_window", "--loop-window"},
+      {"loop_angular_window_deg", "--loop-angle"}};
+  std::vector<std::string> seen;
+  for (const std::string& s : o.set) {
+    const std::size_t eq = s.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw UsageError("--set: '" + quoteForMessage(s) + "' is not NAME=VALUE");
+    const std::string name = s.substr(0, eq);
+    try {
+      setSlam2DParameter(o.config, name, s.substr(eq + 1));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--set: ") + e.what());
+    }
+    if (std::find(seen.begin(), seen.end(), name) != seen.end())
+      throw UsageError("--set: " + name + " is given twice");
+    seen.push_back(name);
+    for (const auto& [field, option] : own)
+      if (field == name && app.count(option) > 0)
+        throw UsageError("--set " + name + " and " + option + " set the same parameter");
+    if (o.no_loops && (name.rfind("loop_", 0) == 0 || name.rfind("wide_", 0) == 0 ||
+                       name == "branch_and_bound_depth"))
+      throw UsageError("--set " + name + " has no effect with --no-loop-closure");
+  }
+  try {
+    validateSlam2DConfig(o.config);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--set: ") + e.what());
+  }
 }
 
 void run(const Slam2DOptions& o) {
@@ -102,7 +117,7 @@ void run(const Slam2DOptions& o) {
 
   if (o.no_loops)
     config.loop_every_n_nodes = config.wide_every_n_nodes = static_cast<std::size_t>(-1);
-  Slam2D slam(config, planar(info.sensor_to_base));
+  Slam2D slam(config, planarPose(info.sensor_to_base));
   Trajectory trajectory;
   double read_seconds = 0.0;
   const bool progress = isatty(STDERR_FILENO) != 0;
@@ -112,7 +127,7 @@ void run(const Slam2DOptions& o) {
     read_seconds += secondsSince(t0);
     if (!scan.laser) throw InputError(scan.name + ": not a 2D laser scan");
     std::optional<Pose2D> odometry;
-    if (scan.odometry) odometry = planar(*scan.odometry);
+    if (scan.odometry) odometry = planarPose(*scan.odometry);
     try {
       slam.addScan(*scan.laser, odometry, scan.stamp);
     } catch (const CapacityError& e) {  // the maps outgrew the budget: name the scan
@@ -132,14 +147,21 @@ void run(const Slam2DOptions& o) {
   if (slam.map().knownCells() == 0)
     throw InputError(o.source.path + ": no beam within --max-range " +
                      plainNumber(config.max_range) + " m: the map is empty");
-  for (const Pose2D& p : slam.trajectory()) trajectory.poses.push_back(spatial(p));
+  for (const Pose2D& p : slam.trajectory()) trajectory.poses.push_back(spatialPose(p));
   if (!std::all_of(trajectory.stamps.begin(), trajectory.stamps.end(),
                    [](double s) { return std::isfinite(s); }))
     trajectory.stamps.clear();
   if (!o.out_poses.empty() && !trajectory.hasStamps())
     throw InputError(o.source.path +
                      ": its scans have no time stamps: --out-poses (TUM) needs them");
-  if (!o.out_poses.empty()) trajectory = inStampOrder(trajectory, o.source.path);
+  if (!o.out_poses.empty()) {
+    try {  // TUM rows in stamp order: raw logs deliver scans out of order
+      trajectory = inStampOrder(trajectory);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(o.source.path + ": " + e.what() +
+                       "; --out-poses (TUM) needs one pose per stamp");
+    }
+  }
   OutputSet outputs;  // committed once the report is printed
   const auto t_write = std::chrono::steady_clock::now();
   writeOutputs(o, slam, trajectory, outputs);
@@ -228,12 +250,15 @@ void addSlam2DCommand(CLI::App& app) {
   sub->add_option("--loop-angle", c.loop_angular_window_deg, "Loop search half-angle (deg)")
       ->check(finiteIn(0.1, 180))
       ->capture_default_str();
+  sub->add_option("--set", o->set,
+                  "Any SLAM parameter, NAME=VALUE (repeatable; names in docs/SLAM.md)");
   sub->add_flag("--no-loop-closure", o->no_loops, "Local SLAM only (no loop search)");
   addFormatOption(*sub, o->format, {"table", "json"});
   sub->callback([o, sub] {
     checkSourceOptions(*sub, o->source);
     for (const char* opt : {"--loop-min-score", "--loop-window", "--loop-angle"})
       refuseIgnored(*sub, opt, !o->no_loops, "with --no-loop-closure");
+    applySettings(*sub, *o);
     if (o->config.max_range <= o->config.min_range)
       throw UsageError("--max-range must exceed the minimum range");
     const MapServerFiles map = mapServerFiles(o->out_map.empty() ? "x.pgm" : o->out_map);

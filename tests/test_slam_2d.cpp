@@ -12,6 +12,7 @@
 #include "metricmap/slam/match_grid.h"
 #include "metricmap/slam/scan_matcher_2d.h"
 #include "metricmap/slam/slam_2d.h"
+#include "metricmap/slam/slam_2d_parameters.h"
 
 namespace metricmap {
 namespace {
@@ -80,6 +81,128 @@ LogOddsGrid2D roomMap(const std::vector<Pose2D>& poses) {
 const std::vector<Pose2D> kMapPoses = {{0, 0, 0},      {1, 0.5, 0.5}, {-3, -2, 2.0},
                                        {4, 2.5, -2.5}, {-4, 0, -0.7}, {2, -3, 1.2}};
 
+/// The best byte score over every candidate of the matcher's discrete set, scored plainly.
+long exhaustiveBest(const MatchGrid& view, const std::vector<Eigen::Vector2f>& pts,
+                    const Pose2D& initial, double angle, int n) {
+  const double step = angularSearchStep(0.05, pts);
+  const int m = static_cast<int>(std::ceil(angle / step - 1e-9));
+  long best = -1;
+  for (int a = -m; a <= m; ++a) {
+    const double th = initial.theta + a * step, c = std::cos(th), s = std::sin(th);
+    for (int dy = -n; dy <= n; ++dy)
+      for (int dx = -n; dx <= n; ++dx) {
+        long sum = 0;
+        for (const Eigen::Vector2f& p : pts) {
+          const auto i =
+              static_cast<std::int64_t>(std::floor((initial.x + c * p.x() - s * p.y()) / 0.05));
+          const auto j =
+              static_cast<std::int64_t>(std::floor((initial.y + s * p.x() + c * p.y()) / 0.05));
+          sum += std::lround(view.probability(i + dx, j + dy) * 255.0f);
+        }
+        best = std::max(best, sum);
+      }
+  }
+  return best;
+}
+
+// Windows that reach past the submap's edge (points scored as unknown there) and windows wholly
+// inside it take different paths through the matcher; both equal the plain search.
+TEST(Slam2D, BranchAndBoundAtTheGridsEdge) {
+  const LogOddsGrid2D grid = roomMap({{0, 0, 0}});
+  const ProbabilityTable table(grid.params());
+  const MatchGrid view(grid, table);
+  for (int depth : {1, 3, 7}) {
+    const BranchAndBoundMatcher2D matcher(view, depth);
+    const Pose2D truth{0.2, -0.1, 0.1};
+    const auto all = points(scanAt(truth));
+    // The points at least 1 m inside the grid at the truth: every candidate of a window of
+    // 0.6 m about it scores them inside.
+    std::vector<Eigen::Vector2f> inner;
+    const double c = std::cos(truth.theta), s = std::sin(truth.theta);
+    for (const Eigen::Vector2f& p : all) {
+      const double x = truth.x + c * p.x() - s * p.y(), y = truth.y + s * p.x() + c * p.y();
+      const double i = x / 0.05 - static_cast<double>(grid.minI());
+      const double j = y / 0.05 - static_cast<double>(grid.minJ());
+      if (i > 20 && j > 20 && i < static_cast<double>(grid.width()) - 20 &&
+          j < static_cast<double>(grid.height()) - 20)
+        inner.push_back(p);
+    }
+    ASSERT_GT(inner.size(), 20u);
+    const std::vector<Eigen::Vector2f>* sets[] = {&all, &inner};
+    for (const std::vector<Eigen::Vector2f>* pts : sets)
+      for (const Pose2D& initial : {Pose2D{0.3, 0.0, 0.12}, Pose2D{4.0, 2.0, 0.1},
+                                    Pose2D{-6.0, 0.5, 0.05}, Pose2D{0.0, -9.0, 0.1}}) {
+        const auto found = matcher.match(*pts, initial, 0.6, 0.05, 0.01);
+        const long best = exhaustiveBest(view, *pts, initial, 0.05, 12);
+        ASSERT_TRUE(found.has_value());
+        EXPECT_EQ(std::lround(found->score * 255.0 * static_cast<double>(pts->size())), best)
+            << depth << " " << initial.x << " " << pts->size();
+      }
+  }
+}
+
+// The bicubic surface passes through the cells' probabilities at their centres, and its
+// gradient is the derivative of its values (central differences).
+TEST(Slam2D, BicubicSurfaceAndGradient) {
+  const LogOddsGrid2D grid = roomMap(kMapPoses);
+  const ProbabilityTable table(grid.params());
+  const MatchGrid view(grid, table);
+  double gx, gy;
+  for (std::int64_t i = -80; i <= 80; i += 7)
+    for (std::int64_t j = -60; j <= 60; j += 5)
+      EXPECT_NEAR(view.interpolateCubic((i + 0.5) * 0.05, (j + 0.5) * 0.05, gx, gy),
+                  view.probability(i, j), 1e-6);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-4, 4);
+  int checked = 0;
+  for (int k = 0; k < 400; ++k) {
+    const double x = u(rng), y = 0.7 * u(rng), h = 1e-5;
+    view.interpolateCubic(x, y, gx, gy);
+    double a, b;
+    const double fx =
+        (view.interpolateCubic(x + h, y, a, b) - view.interpolateCubic(x - h, y, a, b)) / (2 * h);
+    const double fy =
+        (view.interpolateCubic(x, y + h, a, b) - view.interpolateCubic(x, y - h, a, b)) / (2 * h);
+    EXPECT_NEAR(gx, fx, 2e-2 + 1e-3 * std::abs(fx)) << x << " " << y;
+    EXPECT_NEAR(gy, fy, 2e-2 + 1e-3 * std::abs(fy)) << x << " " << y;
+    checked += std::abs(gx) + std::abs(gy) > 0.5;
+  }
+  EXPECT_GT(checked, 50) << "the points should see walls";
+}
+
+// Every parameter by name: read back as set, each name reaching its own field only.
+TEST(Slam2D, ParametersByName) {
+  const Slam2DConfig defaults;
+  const std::vector<std::string> names = slam2DParameterNames();
+  ASSERT_GE(names.size(), 40u);
+  for (const std::string& name : names) {
+    Slam2DConfig c = defaults;
+    const std::string before = slam2DParameter(c, name);
+    setSlam2DParameter(c, name, before);
+    EXPECT_EQ(slam2DParameter(c, name), before) << name;
+    const std::string value = name == "bicubic" ? (before == "true" ? "false" : "true") : "7";
+    setSlam2DParameter(c, name, value);
+    EXPECT_EQ(slam2DParameter(c, name), value) << name;
+    for (const std::string& other : names) {
+      if (other != name) EXPECT_EQ(slam2DParameter(c, other), slam2DParameter(defaults, other));
+    }
+  }
+  Slam2DConfig c;
+  setSlam2DParameter(c, "loop_min_score", "0.7");
+  EXPECT_EQ(c.loop_min_score, 0.7);
+  setSlam2DParameter(c, "map_resolution", "0.1");
+  EXPECT_EQ(c.map.resolution, 0.1);
+  try {
+    setSlam2DParameter(c, "loop_min_scor", "0.5");
+    FAIL() << "an unknown name was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("did you mean loop_min_score"), std::string::npos);
+  }
+  EXPECT_THROW(setSlam2DParameter(c, "scans_per_submap", "1.5"), std::invalid_argument);
+  EXPECT_THROW(setSlam2DParameter(c, "voxel_filter", "nan"), std::invalid_argument);
+  EXPECT_THROW(setSlam2DParameter(c, "bicubic", "1"), std::invalid_argument);
+}
+
 TEST(Slam2D, BranchAndBoundEqualsTheExhaustiveSearch) {
   const LogOddsGrid2D grid = roomMap(kMapPoses);
   const ProbabilityTable table(grid.params());
@@ -98,24 +221,8 @@ TEST(Slam2D, BranchAndBoundEqualsTheExhaustiveSearch) {
     const auto found = matcher.match(pts, initial, window, angle, 0.1);
     ASSERT_TRUE(found.has_value());
     // The reference: every candidate of the same discrete set, scored in bytes.
-    const double step = angularSearchStep(0.05, pts);
-    const int m = static_cast<int>(std::ceil(angle / step - 1e-9)), n = 10;
-    long best = -1;
-    for (int a = -m; a <= m; ++a) {
-      const double th = initial.theta + a * step, c = std::cos(th), s = std::sin(th);
-      for (int dy = -n; dy <= n; ++dy)
-        for (int dx = -n; dx <= n; ++dx) {
-          long sum = 0;
-          for (const Eigen::Vector2f& p : pts) {
-            const auto i =
-                static_cast<std::int64_t>(std::floor((initial.x + c * p.x() - s * p.y()) / 0.05));
-            const auto j =
-                static_cast<std::int64_t>(std::floor((initial.y + s * p.x() + c * p.y()) / 0.05));
-            sum += std::lround(view.probability(i + dx, j + dy) * 255.0f);
-          }
-          best = std::max(best, sum);
-        }
-    }
+    const long best = exhaustiveBest(view, pts, initial, angle, 10);
+    const int m = static_cast<int>(std::ceil(angle / angularSearchStep(0.05, pts) - 1e-9));
     EXPECT_EQ(std::lround(found->score * 255.0 * static_cast<double>(pts.size())), best) << trial;
     EXPECT_LT(matcher.lastCandidates(), static_cast<std::size_t>((2 * m + 1) * 21 * 21) / 4)
         << "branch-and-bound should prune most candidates";

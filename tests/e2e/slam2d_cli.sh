@@ -88,6 +88,24 @@ print('slam2d', s['abs_translation_m'], s['abs_rotation_deg']); print('odometry'
 assert s['relations']['used'] == 810 and o['relations']['used'] == 810, (s['relations'], o['relations'])
 assert 5 * s['abs_translation_m']['mean'] < o['abs_translation_m']['mean'], (s, o)
 assert 5 * s['abs_rotation_deg']['mean'] < o['abs_rotation_deg']['mean'], (s, o)"
+# A trajectory of every seventh scan: the relation stamps it lacks are placed by the log's raw
+# odometry from the nearest pose (the benchmark's rule); without --odometry they are skipped.
+/usr/bin/python3 -c "
+import numpy as np; np.savetxt('$tmp/sparse.tum', np.loadtxt('$tmp/p.tum')[::7], fmt='%.6f')"
+"$MM" evaluate "$tmp/sparse.tum" --relations "$tmp/rel.txt" --max-time-diff 0.0001 \
+  --odometry "$raw" --format json >"$tmp/rsp.json"
+"$MM" evaluate "$tmp/sparse.tum" --relations "$tmp/rel.txt" --max-time-diff 0.0001 \
+  --format json >"$tmp/rsn.json"
+check "--odometry places the stamps a sparse estimate lacks; the metric stays close" /usr/bin/python3 -c "
+import json; s = json.load(open('$tmp/rs.json')); p = json.load(open('$tmp/rsp.json'))
+n = json.load(open('$tmp/rsn.json'))
+print('sparse + odometry', p['abs_translation_m'], p['relations']['stamps_placed_by_odometry'])
+assert p['relations']['used'] == 810 and p['relations']['stamps_placed_by_odometry'] > 1000, p
+assert n['relations']['used'] < 100, n['relations']
+a, b = p['abs_translation_m']['mean'], s['abs_translation_m']['mean']
+assert a != b and abs(a - b) < 0.5 * b, (a, b)"
+expect 2 "--odometry has no effect without --relations" -- \
+  "$MM" evaluate "$tmp/p.tum" --reference "$tmp/p.tum" --odometry "$raw"
 check "the map's YAML matches its PGM" /usr/bin/python3 -c "
 d = open('$tmp/m.yaml').read(); assert 'resolution: 0.05' in d and 'image: m.pgm' in d, d"
 
@@ -111,7 +129,25 @@ expect 1 "zero.clf: no beam within --max-range" -- "$MM" slam2d "$tmp/zero.clf" 
 expect 1 "odohuge.clf: line 10" -- "$MM" slam2d "$tmp/odohuge.clf" --out-poses "$tmp/x.tum"
 expect 2 "--frames" -- "$MM" slam2d "$tmp/s40.clf" --frames "" --out-poses "$tmp/x.tum"
 expect 2 "--out-poses" -- "$MM" slam2d "$tmp/s40.clf" --out-poses "$tmp/x.pcd"
+expect 2 "unknown SLAM parameter 'loop_min_scor' (did you mean loop_min_score?)" -- \
+  "$MM" slam2d "$tmp/s40.clf" --set loop_min_scor=0.5 --out-poses "$tmp/x.tum"
+expect 2 "--set: prob_hit must be in (0.5, 1)" -- \
+  "$MM" slam2d "$tmp/s40.clf" --set prob_hit=2 --out-poses "$tmp/x.tum"
+expect 2 "--set: scans_per_submap: 'x'" -- \
+  "$MM" slam2d "$tmp/s40.clf" --set scans_per_submap=x --out-poses "$tmp/x.tum"
+expect 2 "--set resolution and --resolution set the same parameter" -- \
+  "$MM" slam2d "$tmp/s40.clf" --set resolution=0.1 --resolution 0.1 --out-poses "$tmp/x.tum"
+expect 2 "--set: node_min_distance is given twice" -- "$MM" slam2d "$tmp/s40.clf" \
+  --set node_min_distance=0 --set node_min_distance=1 --out-poses "$tmp/x.tum"
+expect 2 "--set loop_min_overlap has no effect with --no-loop-closure" -- \
+  "$MM" slam2d "$tmp/s40.clf" --no-loop-closure --set loop_min_overlap=0.2 --out-poses "$tmp/x.tum"
 check "nothing written after a refusal" test ! -e "$tmp/x.tum" -a ! -e "$tmp/x.png" -a ! -e "$tmp/x.pgm" -a ! -e "$tmp/x.pcd"
+"$MM" slam2d "$tmp/s40.clf" --format json >"$tmp/s40a.json"
+"$MM" slam2d "$tmp/s40.clf" --format json --set node_min_distance=0 --set node_min_angle_deg=0 \
+  >"$tmp/s40b.json"
+check "--set reaches the SLAM: a motion filter of zero makes every scan a node" /usr/bin/python3 -c "
+import json; a = json.load(open('$tmp/s40a.json')); b = json.load(open('$tmp/s40b.json'))
+assert b['nodes'] == 40 and a['nodes'] < 40, (a['nodes'], b['nodes'])"
 awk 'NR%2==0{sub(/^FLASER 180 /,"FLASER 181 ")}1' "$tmp/s40.clf" >"$tmp/mixed.clf"
 "$MM" slam2d "$tmp/mixed.clf" --out-poses "$tmp/mixed.tum" >/dev/null 2>"$tmp/mixed.err"
 check "lines with the wrong beam count: skipped and warned about" grep -q "mixed.clf: skipped 20 malformed" "$tmp/mixed.err"

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
@@ -9,40 +10,94 @@
 #include "metricmap/evaluation/rotation_angle.h"
 
 namespace metricmap {
+namespace {
+
+/// A trajectory's stamps in increasing order (raw logs step back), with the poses' indices.
+struct SortedStamps {
+  std::vector<std::size_t> order;
+  std::vector<double> stamps;
+};
+
+SortedStamps sortedStamps(const Trajectory& t, const char* what) {
+  if (!t.hasStamps())
+    throw std::invalid_argument(std::string("the relation metric needs ") + what +
+                                " with time stamps");
+  if (t.stamps.size() != t.size())
+    throw std::invalid_argument(std::string(what) + " has " + std::to_string(t.stamps.size()) +
+                                " stamps for " + std::to_string(t.size()) + " poses");
+  SortedStamps s;
+  s.order.resize(t.size());
+  std::iota(s.order.begin(), s.order.end(), std::size_t{0});
+  std::stable_sort(s.order.begin(), s.order.end(),
+                   [&](std::size_t a, std::size_t b) { return t.stamps[a] < t.stamps[b]; });
+  s.stamps.resize(t.size());
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    s.stamps[k] = t.stamps[s.order[k]];
+    if (!std::isfinite(s.stamps[k]))
+      throw std::invalid_argument(std::string(what) + " has a stamp that is not finite");
+  }
+  return s;
+}
+
+std::optional<Eigen::Isometry3d> poseAt(const Trajectory& t, const SortedStamps& s, double at,
+                                        double max_extrapolation) {
+  const std::vector<double>& st = s.stamps;
+  if (st.empty() || at < st.front() - max_extrapolation || at > st.back() + max_extrapolation)
+    return std::nullopt;
+  if (at <= st.front()) return t.poses[s.order.front()];
+  if (at >= st.back()) return t.poses[s.order.back()];
+  const std::size_t hi = static_cast<std::size_t>(std::upper_bound(st.begin(), st.end(), at) -
+                                                  st.begin());  // st[hi - 1] <= at < st[hi]
+  const Eigen::Isometry3d& a = t.poses[s.order[hi - 1]];
+  const Eigen::Isometry3d& b = t.poses[s.order[hi]];
+  const double span = st[hi] - st[hi - 1];
+  const double f = span > 0 ? (at - st[hi - 1]) / span : 0.0;
+  Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
+  out.translation() = a.translation() + f * (b.translation() - a.translation());
+  out.linear() = Eigen::Quaterniond(a.linear())
+                     .slerp(f, Eigen::Quaterniond(b.linear()))
+                     .normalized()
+                     .toRotationMatrix();
+  return out;
+}
+
+}  // namespace
+
+std::optional<Eigen::Isometry3d> poseAtStamp(const Trajectory& trajectory, double t,
+                                             double max_extrapolation) {
+  return poseAt(trajectory, sortedStamps(trajectory, "the trajectory"), t, max_extrapolation);
+}
 
 RelationError relationError(const Trajectory& estimate, const std::vector<PoseRelation>& relations,
-                            double max_time_diff) {
-  if (!estimate.hasStamps()) {
-    throw std::invalid_argument("the relation metric needs an estimate with time stamps");
-  }
-  if (estimate.stamps.size() != estimate.size())
-    throw std::invalid_argument("the estimate has " + std::to_string(estimate.stamps.size()) +
-                                " stamps for " + std::to_string(estimate.size()) + " poses");
-  // Stamps in the order the estimate gives them (raw logs step back): looked up sorted.
-  std::vector<std::size_t> order(estimate.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return estimate.stamps[a] < estimate.stamps[b];
-  });
-  std::vector<double> sorted(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    sorted[k] = estimate.stamps[order[k]];
-    if (!std::isfinite(sorted[k]))
-      throw std::invalid_argument("the estimate has a stamp that is not finite");
-  }
+                            double max_time_diff, const Trajectory* odometry) {
+  const SortedStamps est = sortedStamps(estimate, "the estimate");
+  SortedStamps odo;
+  if (odometry) odo = sortedStamps(*odometry, "the odometry");
+  // The estimate's pose at a relation stamp: its own within max_time_diff, else (with
+  // odometry) the nearest one moved by the odometry.
+  std::size_t interpolated = 0;
+  auto poseFor = [&](double t) -> std::optional<Eigen::Isometry3d> {
+    const std::size_t n = nearestStamp(est.stamps, t, max_time_diff);
+    if (n < est.stamps.size()) return estimate.poses[est.order[n]];
+    if (!odometry) return std::nullopt;
+    const std::size_t m = nearestStamp(est.stamps, t, std::numeric_limits<double>::infinity());
+    const double tn = est.stamps[m];
+    const auto o_n = poseAt(*odometry, odo, tn, max_time_diff);
+    const auto o_t = poseAt(*odometry, odo, t, max_time_diff);
+    if (!o_n || !o_t) return std::nullopt;
+    ++interpolated;
+    return estimate.poses[est.order[m]] * (o_n->inverse() * *o_t);
+  };
   RelationError e;
   std::vector<double> t_sq, r_sq;
   for (std::size_t k = 0; k < relations.size(); ++k) {
     const PoseRelation& r = relations[k];
-    std::size_t i = nearestStamp(sorted, r.stamp1, max_time_diff);
-    std::size_t j = nearestStamp(sorted, r.stamp2, max_time_diff);
-    if (i == estimate.size() || j == estimate.size()) {
+    const std::optional<Eigen::Isometry3d> pi = poseFor(r.stamp1), pj = poseFor(r.stamp2);
+    if (!pi || !pj) {
       e.skipped.push_back(k);
       continue;
     }
-    i = order[i];
-    j = order[j];
-    const Eigen::Isometry3d delta = estimate.poses[i].inverse() * estimate.poses[j];
+    const Eigen::Isometry3d delta = pi->inverse() * *pj;
     const Eigen::Isometry3d err = r.relative.inverse() * delta;
     e.translation.push_back(err.translation().norm());
     e.rotation_deg.push_back(rotationAngleDeg(err.linear()));
@@ -50,6 +105,7 @@ RelationError relationError(const Trajectory& estimate, const std::vector<PoseRe
     r_sq.push_back(e.rotation_deg.back() * e.rotation_deg.back());
   }
   e.used = e.translation.size();
+  e.interpolated = interpolated;
   e.translation_abs = meanAndSampleStd(e.translation);
   e.translation_sq = meanAndSampleStd(t_sq);
   e.rotation_abs_deg = meanAndSampleStd(e.rotation_deg);

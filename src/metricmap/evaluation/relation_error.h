@@ -7,6 +7,7 @@
 /// (m), squared translation (m^2), rotation angle (deg) and squared angle (deg^2).
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "metricmap/evaluation/error_statistics.h"
@@ -19,6 +20,9 @@ namespace metricmap {
 struct RelationError {
   std::size_t used = 0;
   std::vector<std::size_t> skipped;  ///< indices of the relations not found
+  /// \brief Relation stamps without an estimated pose within max_time_diff, placed by the
+  /// odometry from the nearest estimated pose (counted once per stamp).
+  std::size_t interpolated = 0;
   std::vector<double> translation;   ///< per used relation, metres
   std::vector<double> rotation_deg;  ///< per used relation, degrees
   MeanAndStd translation_abs;        ///< m
@@ -30,13 +34,25 @@ struct RelationError {
 /// \brief The metric of `estimate` over `relations`.
 ///
 /// Each relation's stamps are looked up in the estimate's stamps: the nearest one is used when
-/// it is within `max_time_diff` seconds (a relation whose stamp has none is skipped and
-/// counted; the benchmark's metricEvaluator looks within 0.1 s and otherwise interpolates
-/// odometry, which an estimate does not have). Standard deviations divide by n - 1.
+/// it is within `max_time_diff` seconds. Otherwise, as the benchmark's metricEvaluator does,
+/// when `odometry` (the log's raw odometry, with stamps) is given, the pose is the nearest
+/// estimated pose P(t_n) moved by the odometry's motion from t_n to the stamp:
+/// P(t) = P(t_n) O(t_n)^-1 O(t), O interpolated between its two nearest stamps (linear in
+/// translation, slerp in rotation); a stamp outside the odometry's span by more than
+/// max_time_diff, or a relation without odometry, is skipped and counted.
+/// Standard deviations divide by n - 1.
 /// Stamps need not increase (raw logs step back): they are searched in sorted order, the first
 /// of equal stamps in the estimate's order winning.
-/// \throws std::invalid_argument when the estimate has no stamps or one is not finite
+/// \throws std::invalid_argument when the estimate (or the odometry) has no stamps or one is not
+/// finite
 RelationError relationError(const Trajectory& estimate, const std::vector<PoseRelation>& relations,
-                            double max_time_diff = 0.01);
+                            double max_time_diff = 0.01, const Trajectory* odometry = nullptr);
+
+/// \brief The pose of `trajectory` at `t`: interpolated between the two stamps around it
+/// (linear in translation, slerp in rotation), or the end pose when t is beyond an end by at
+/// most `max_extrapolation` seconds; nullopt further out. Stamps need not be sorted.
+/// \throws std::invalid_argument when the trajectory has no stamps or one is not finite
+std::optional<Eigen::Isometry3d> poseAtStamp(const Trajectory& trajectory, double t,
+                                             double max_extrapolation);
 
 }  // namespace metricmap

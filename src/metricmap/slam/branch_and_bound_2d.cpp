@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <stdexcept>
 
 #include "metricmap/common/memory_budget.h"
@@ -14,20 +13,29 @@ std::uint8_t toByte(float p) {
   return static_cast<std::uint8_t>(std::lround(std::clamp(p, 0.0f, 1.0f) * 255.0f));
 }
 
-/// out[k] = max(in[k - width + 1 .. k]) for k in [0, n + width - 1), `pad` outside in.
-void slidingMax(const std::uint8_t* in, std::ptrdiff_t in_stride, std::int64_t n, int width,
-                std::uint8_t pad, std::uint8_t* out, std::ptrdiff_t out_stride) {
-  std::deque<std::pair<std::int64_t, std::uint8_t>> window;  // decreasing values
-  auto value = [&](std::int64_t k) { return k >= 0 && k < n ? in[k * in_stride] : pad; };
-  for (std::int64_t k = 0; k < n + width - 1; ++k) {
-    const std::uint8_t v = value(k);
-    while (!window.empty() && window.back().second <= v) window.pop_back();
-    window.emplace_back(k, v);
-    while (window.front().first <= k - width) window.pop_front();
-    // the padding before index 0 is `pad`, which can exceed every value seen so far
-    std::uint8_t m = window.front().second;
-    if (k - width + 1 < 0 && pad > m) m = pad;
-    out[k * out_stride] = m;
+/// Level d from level d - 1 (`prev`, cells of windows of `half` = 2^(d-1)): the window of 2^d
+/// ending at k is the two windows of `half` ending at k and at k - half; cells beyond `prev`
+/// are `pad`. Separable: along rows, then along columns.
+void doubleLevel(const std::vector<std::uint8_t>& prev, std::int64_t pw, std::int64_t ph,
+                 std::int64_t half, std::uint8_t pad, std::vector<std::uint8_t>& out,
+                 std::int64_t w, std::int64_t h) {
+  std::vector<std::uint8_t> rows(static_cast<std::size_t>(w * ph));
+  for (std::int64_t j = 0; j < ph; ++j) {
+    const std::uint8_t* in = prev.data() + j * pw;
+    std::uint8_t* o = rows.data() + j * w;
+    for (std::int64_t i = 0; i < w; ++i) {
+      const std::uint8_t a = i < pw ? in[i] : pad;
+      const std::uint8_t b = i - half >= 0 && i - half < pw ? in[i - half] : pad;
+      o[i] = std::max(a, b);
+    }
+  }
+  out.assign(static_cast<std::size_t>(w * h), pad);
+  for (std::int64_t j = 0; j < h; ++j) {
+    std::uint8_t* o = out.data() + j * w;
+    const bool has_a = j < ph, has_b = j - half >= 0 && j - half < ph;
+    const std::uint8_t* a = has_a ? rows.data() + j * w : nullptr;
+    const std::uint8_t* b = has_b ? rows.data() + (j - half) * w : nullptr;
+    for (std::int64_t i = 0; i < w; ++i) o[i] = std::max(has_a ? a[i] : pad, has_b ? b[i] : pad);
   }
 }
 
@@ -45,23 +53,22 @@ BranchAndBoundMatcher2D::BranchAndBoundMatcher2D(const MatchGrid& grid, int dept
     total += (static_cast<std::uint64_t>(w) + pad) * (static_cast<std::uint64_t>(h) + pad);
   }
   checkMemory(total, 1, "the loop-closure grids of a submap");
-  std::vector<std::uint8_t> base(static_cast<std::size_t>(w * h));
+  levels_.resize(static_cast<std::size_t>(depth));
+  Level& base = levels_[0];
+  base.w = w;
+  base.h = h;
+  base.cells.resize(static_cast<std::size_t>(w * h));
   for (std::int64_t j = 0; j < h; ++j)
     for (std::int64_t i = 0; i < w; ++i)
-      base[static_cast<std::size_t>(j * w + i)] = toByte(grid.probability(i0_ + i, j0_ + j));
-  levels_.resize(static_cast<std::size_t>(depth));
-  for (int d = 0; d < depth; ++d) {
-    const int width = 1 << d;
+      base.cells[static_cast<std::size_t>(j * w + i)] = toByte(grid.probability(i0_ + i, j0_ + j));
+  for (int d = 1; d < depth; ++d) {
+    const Level& prev = levels_[static_cast<std::size_t>(d - 1)];
     Level& level = levels_[static_cast<std::size_t>(d)];
-    level.pad = width - 1;
+    level.pad = (1 << d) - 1;
     level.w = w + level.pad;
     level.h = h + level.pad;
-    std::vector<std::uint8_t> rows(static_cast<std::size_t>(level.w * h));
-    for (std::int64_t j = 0; j < h; ++j)
-      slidingMax(base.data() + j * w, 1, w, width, outside_, rows.data() + j * level.w, 1);
-    level.cells.resize(static_cast<std::size_t>(level.w * level.h));
-    for (std::int64_t i = 0; i < level.w; ++i)
-      slidingMax(rows.data() + i, level.w, h, width, outside_, level.cells.data() + i, level.w);
+    doubleLevel(prev.cells, prev.w, prev.h, std::int64_t{1} << (d - 1), outside_, level.cells,
+                level.w, level.h);
   }
 }
 
@@ -71,39 +78,45 @@ std::size_t BranchAndBoundMatcher2D::bytes() const {
   return n;
 }
 
-long BranchAndBoundMatcher2D::score(const Level& level, const std::vector<std::int64_t>& ci,
-                                    const std::vector<std::int64_t>& cj, int dx, int dy) const {
+long BranchAndBoundMatcher2D::score(std::size_t l, const Rotated& r, int dx, int dy) const {
   ++candidates_;
+  const Level& level = levels_[l];
   long sum = 0;
-  for (std::size_t k = 0; k < ci.size(); ++k) sum += level.at(ci[k] + dx, cj[k] + dy, outside_);
+  const std::int64_t x = dx + level.pad, y = dy + level.pad;
+  if (r.i_lo + x >= 0 && r.j_lo + y >= 0 && r.i_hi + x < level.w && r.j_hi + y < level.h) {
+    // Every point inside the level: no test per point.
+    const std::uint8_t* cells = level.cells.data() + y * level.w + x;
+    for (const std::int64_t o : r.offsets[l]) sum += cells[o];
+    return sum;
+  }
+  for (std::size_t k = 0; k < r.i.size(); ++k) sum += level.at(r.i[k] + dx, r.j[k] + dy, outside_);
   return sum;
 }
 
-void BranchAndBoundMatcher2D::search(const std::vector<std::vector<std::int64_t>>& ci,
-                                     const std::vector<std::vector<std::int64_t>>& cj,
-                                     std::vector<Candidate>& todo, int depth, int window,
+void BranchAndBoundMatcher2D::search(const std::vector<Rotated>& rotated, Candidate* todo,
+                                     std::size_t count, int depth, int window,
                                      Candidate& best) const {
-  std::sort(todo.begin(), todo.end(),
+  std::sort(todo, todo + count,
             [](const Candidate& a, const Candidate& b) { return a.score > b.score; });
-  for (const Candidate& c : todo) {
+  for (std::size_t k = 0; k < count; ++k) {
+    const Candidate& c = todo[k];
     if (c.score <= best.score) return;  // sorted: nothing after it can do better
     if (depth == 0) {
       best = c;
       return;
     }
     const int half = 1 << (depth - 1);
-    const Level& level = levels_[static_cast<std::size_t>(depth - 1)];
-    std::vector<Candidate> children;
-    children.reserve(4);
+    Candidate children[4];
+    std::size_t n = 0;
     for (int oy : {0, half})
       for (int ox : {0, half}) {
         const int dx = c.dx + ox, dy = c.dy + oy;
         if (dx > window || dy > window) continue;
-        children.push_back({c.angle, dx, dy,
-                            score(level, ci[static_cast<std::size_t>(c.angle)],
-                                  cj[static_cast<std::size_t>(c.angle)], dx, dy)});
+        children[n++] = {c.angle, dx, dy,
+                         score(static_cast<std::size_t>(depth - 1),
+                               rotated[static_cast<std::size_t>(c.angle)], dx, dy)};
       }
-    search(ci, cj, children, depth - 1, window, best);
+    search(rotated, children, n, depth - 1, window, best);
   }
 }
 
@@ -116,20 +129,30 @@ std::optional<ScanMatch2D> BranchAndBoundMatcher2D::match(
   const int m = static_cast<int>(std::ceil(angular_window / step - 1e-9));
   const int window = static_cast<int>(std::floor(linear_window / res_ + 1e-9));
   const double inv = 1.0 / res_;
-  std::vector<std::vector<std::int64_t>> ci(static_cast<std::size_t>(2 * m + 1)),
-      cj(static_cast<std::size_t>(2 * m + 1));
+  std::vector<Rotated> rotated(static_cast<std::size_t>(2 * m + 1));
   for (int a = -m; a <= m; ++a) {
     const double theta = initial.theta + a * step, c = std::cos(theta), s = std::sin(theta);
-    auto& is = ci[static_cast<std::size_t>(a + m)];
-    auto& js = cj[static_cast<std::size_t>(a + m)];
-    is.resize(points.size());
-    js.resize(points.size());
+    Rotated& r = rotated[static_cast<std::size_t>(a + m)];
+    r.i.resize(points.size());
+    r.j.resize(points.size());
     for (std::size_t k = 0; k < points.size(); ++k) {
       const Eigen::Vector2f& p = points[k];
-      is[k] =
+      r.i[k] =
           static_cast<std::int64_t>(std::floor((initial.x + c * p.x() - s * p.y()) * inv)) - i0_;
-      js[k] =
+      r.j[k] =
           static_cast<std::int64_t>(std::floor((initial.y + s * p.x() + c * p.y()) * inv)) - j0_;
+    }
+    const auto [ilo, ihi] = std::minmax_element(r.i.begin(), r.i.end());
+    const auto [jlo, jhi] = std::minmax_element(r.j.begin(), r.j.end());
+    r.i_lo = *ilo;
+    r.i_hi = *ihi;
+    r.j_lo = *jlo;
+    r.j_hi = *jhi;
+    r.offsets.resize(levels_.size());
+    for (std::size_t l = 0; l < levels_.size(); ++l) {
+      r.offsets[l].resize(points.size());
+      for (std::size_t k = 0; k < points.size(); ++k)
+        r.offsets[l][k] = r.j[k] * levels_[l].w + r.i[k];
     }
   }
   const int top = static_cast<int>(levels_.size()) - 1;
@@ -140,13 +163,12 @@ std::optional<ScanMatch2D> BranchAndBoundMatcher2D::match(
       for (int dx = -window; dx <= window; dx += stride)
         todo.push_back(
             {a, dx, dy,
-             score(levels_[static_cast<std::size_t>(top)], ci[static_cast<std::size_t>(a)],
-                   cj[static_cast<std::size_t>(a)], dx, dy)});
+             score(static_cast<std::size_t>(top), rotated[static_cast<std::size_t>(a)], dx, dy)});
   const long n = static_cast<long>(points.size());
   // The best must reach min_score: start the bound just below it.
   Candidate best{0, 0, 0, static_cast<long>(std::ceil(min_score * 255.0 * n)) - 1};
   const long floor_score = best.score;
-  search(ci, cj, todo, top, window, best);
+  search(rotated, todo.data(), todo.size(), top, window, best);
   if (best.score <= floor_score) return std::nullopt;
   ScanMatch2D found;
   found.pose = {initial.x + best.dx * res_, initial.y + best.dy * res_,

@@ -54,11 +54,16 @@ class BranchAndBoundMatcher2D {
     int angle = 0, dx = 0, dy = 0;
     long score = 0;
   };
-  long score(const Level& level, const std::vector<std::int64_t>& ci,
-             const std::vector<std::int64_t>& cj, int dx, int dy) const;
-  void search(const std::vector<std::vector<std::int64_t>>& ci,
-              const std::vector<std::vector<std::int64_t>>& cj, std::vector<Candidate>& todo,
-              int depth, int window, Candidate& best) const;
+  /// The scan's cells at one rotation: per point (i, j) relative to the grid's first cell,
+  /// their bounding box, and per level the points' offsets j * w + i in that level's rows.
+  struct Rotated {
+    std::vector<std::int64_t> i, j;
+    std::int64_t i_lo = 0, i_hi = 0, j_lo = 0, j_hi = 0;
+    std::vector<std::vector<std::int64_t>> offsets;  ///< [level][point]
+  };
+  long score(std::size_t level, const Rotated& r, int dx, int dy) const;
+  void search(const std::vector<Rotated>& rotated, Candidate* todo, std::size_t count, int depth,
+              int window, Candidate& best) const;
 
   std::vector<Level> levels_;
   std::int64_t i0_ = 0, j0_ = 0;

@@ -37,4 +37,36 @@ float MatchGrid::interpolate(double x, double y, double& gx, double& gy) const {
   return static_cast<float>(bottom + b * (top - bottom));
 }
 
+namespace {
+
+/// Value and derivative of the Catmull-Rom spline through p0..p3 at t in [0, 1] (between p1, p2).
+inline void hermite(double p0, double p1, double p2, double p3, double t, double& f, double& df) {
+  const double a = 0.5 * (-p0 + 3.0 * p1 - 3.0 * p2 + p3);
+  const double b = 0.5 * (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3);
+  const double c = 0.5 * (-p0 + p2);
+  f = p1 + t * (c + t * (b + t * a));
+  df = c + t * (2.0 * b + 3.0 * a * t);
+}
+
+}  // namespace
+
+float MatchGrid::interpolateCubic(double x, double y, double& gx, double& gy) const {
+  const double u = x * inv_res_ - 0.5, v = y * inv_res_ - 0.5;
+  const double fu = std::floor(u), fv = std::floor(v);
+  const auto i = static_cast<std::int64_t>(fu), j = static_cast<std::int64_t>(fv);
+  const double a = u - fu, b = v - fv;
+  double f[4], df[4];
+  for (int r = 0; r < 4; ++r) {
+    const std::int64_t jj = j - 1 + r;
+    hermite(probability(i - 1, jj), probability(i, jj), probability(i + 1, jj),
+            probability(i + 2, jj), a, f[r], df[r]);
+  }
+  double value, dv, dudx, unused;
+  hermite(f[0], f[1], f[2], f[3], b, value, dv);
+  hermite(df[0], df[1], df[2], df[3], b, dudx, unused);
+  gx = dudx * inv_res_;
+  gy = dv * inv_res_;
+  return static_cast<float>(value);
+}
+
 }  // namespace metricmap

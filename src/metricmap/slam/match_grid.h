@@ -52,6 +52,11 @@ class MatchGrid {
   /// \brief Bilinear interpolation of the cells' probabilities at world (x, y), and its
   /// gradient (per metre).
   float interpolate(double x, double y, double& gx, double& gy) const;
+  /// \brief Bicubic interpolation (Catmull-Rom: the cubic Hermite spline of Ceres'
+  /// BiCubicInterpolator, which Cartographer's matcher uses) at world (x, y), and its gradient
+  /// (per metre). Its gradient is continuous across cell borders, so a Gauss-Newton step is not
+  /// pulled to cell centres as it is on the bilinear surface.
+  float interpolateCubic(double x, double y, double& gx, double& gy) const;
 
   std::int64_t minI() const { return i0_; }
   std::int64_t minJ() const { return j0_; }

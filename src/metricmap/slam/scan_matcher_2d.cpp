@@ -77,7 +77,7 @@ ScanMatch2D correlativeSearch(const MatchGrid& grid, const std::vector<Eigen::Ve
 
 ScanMatch2D refinePose(const MatchGrid& grid, const std::vector<Eigen::Vector2f>& points,
                        const Pose2D& initial, const Pose2D& prior, double translation_weight,
-                       double rotation_weight, int iterations) {
+                       double rotation_weight, int iterations, bool cubic) {
   Pose2D x = initial;
   if (!points.empty()) {
     const double w_occ = 1.0 / std::sqrt(static_cast<double>(points.size()));
@@ -90,7 +90,9 @@ ScanMatch2D refinePose(const MatchGrid& grid, const std::vector<Eigen::Vector2f>
       for (const Eigen::Vector2f& p : points) {
         const double px = p.x(), py = p.y();
         double gx, gy;
-        const double m = grid.interpolate(x.x + c * px - s * py, x.y + s * px + c * py, gx, gy);
+        const double wx = x.x + c * px - s * py, wy = x.y + s * px + c * py;
+        const double m =
+            cubic ? grid.interpolateCubic(wx, wy, gx, gy) : grid.interpolate(wx, wy, gx, gy);
         const double r = (1.0 - m) * w_occ;
         const Eigen::Vector3d j(-gx * w_occ, -gy * w_occ,
                                 -(gx * (-s * px - c * py) + gy * (c * px - s * py)) * w_occ);

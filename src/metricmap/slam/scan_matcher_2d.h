@@ -2,8 +2,8 @@
 /// \file scan_matcher_2d.h
 /// \brief Matching a 2D scan (points in the sensor frame) against a probability grid: an
 /// exhaustive correlative search in a small window (Olson's real-time correlative matching),
-/// then Gauss-Newton on the bilinearly interpolated grid with a prior on the search's result
-/// (the cost of Cartographer's Ceres scan matcher: Σ ((1 - M(T p_k)) / √N)² plus weighted
+/// then Gauss-Newton on the interpolated grid (bilinear or bicubic) with a prior on the search's
+/// result (the cost of Cartographer's Ceres scan matcher: Σ ((1 - M(T p_k)) / √N)² plus weighted
 /// squared translation and rotation away from the prior).
 
 #include <vector>
@@ -39,9 +39,10 @@ ScanMatch2D correlativeSearch(const MatchGrid& grid, const std::vector<Eigen::Ve
 
 /// \brief Gauss-Newton from `initial` (at most `iterations` steps, stopping when a step moves
 /// less than 1e-6 m and rad), with the prior `prior` weighted by translation_weight and
-/// rotation_weight. The score is the nearest-cell score at the result.
+/// rotation_weight, on the bicubic surface (`cubic`) or the bilinear one. The score is the
+/// nearest-cell score at the result.
 ScanMatch2D refinePose(const MatchGrid& grid, const std::vector<Eigen::Vector2f>& points,
                        const Pose2D& initial, const Pose2D& prior, double translation_weight,
-                       double rotation_weight, int iterations);
+                       double rotation_weight, int iterations, bool cubic = false);
 
 }  // namespace metricmap

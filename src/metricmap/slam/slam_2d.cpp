@@ -298,7 +298,7 @@ struct Slam2D::Impl {
       const MatchGrid grid(*sub.grid, table);
       const ScanMatch2D refined =
           refinePose(grid, node.points, m->pose, m->pose, config.translation_weight,
-                     config.rotation_weight, config.refine_iterations);
+                     config.rotation_weight, config.refine_iterations, config.bicubic);
       if (refined.score < config.loop_min_score) continue;
       const std::size_t e =
           graph.addEdge(sub.anchor, n, compose(inverse(la), refined.pose), loop_information, true);
@@ -399,7 +399,7 @@ void Slam2D::addScan(const LaserScan& scan, const std::optional<Pose2D>& odometr
         correlativeSearch(grid, node.points, predicted, c.local_linear_window,
                           c.local_angular_window_deg * kPi / 180.0, step);
     pose = refinePose(grid, node.points, coarse.pose, coarse.pose, c.translation_weight,
-                      c.rotation_weight, c.refine_iterations)
+                      c.rotation_weight, c.refine_iterations, c.bicubic)
                .pose;
   }
   d.local.push_back(pose);
@@ -465,6 +465,17 @@ std::vector<Pose2D> Slam2D::trajectory() const {
     const std::size_t n = d.scan_node[j];
     const Pose2D g = d.globalOf(n);
     out.push_back(compose(compose(g, inverse(d.nodes[n].local)), d.local[j]));
+  }
+  return out;
+}
+
+std::vector<Eigen::Vector2d> Slam2D::submapCentres() const {
+  const Impl& d = *impl_;
+  std::vector<Eigen::Vector2d> out;
+  out.reserve(d.submaps.size());
+  for (const Impl::Submap& s : d.submaps) {
+    const Pose2D to_global = compose(d.globalOf(s.anchor), inverse(d.nodes[s.anchor].local));
+    out.push_back(apply(to_global, s.centre_local.cast<float>()).cast<double>());
   }
   return out;
 }

@@ -89,6 +89,9 @@ class Slam2D {
   const std::vector<std::size_t>& nodeScans() const;
   /// \brief The loop closures in the graph (found, and not removed as outliers).
   const std::vector<LoopClosure2D>& loops() const;
+  /// \brief Every submap's centre (the mean of its nodes' positions) in the global frame, at
+  /// the current estimate of its first node: where a picture draws a loop edge from.
+  std::vector<Eigen::Vector2d> submapCentres() const;
   /// \brief The map rebuilt from every node (after finish). \throws std::logic_error before
   const LogOddsGrid2D& map() const;
   const Slam2DStats& stats() const;

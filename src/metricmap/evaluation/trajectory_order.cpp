@@ -1,0 +1,30 @@
+#include "metricmap/evaluation/trajectory_order.h"
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace metricmap {
+
+Trajectory inStampOrder(const Trajectory& t) {
+  if (!t.hasStamps() || t.stamps.size() != t.size())
+    throw std::invalid_argument("a trajectory in stamp order needs one stamp per pose");
+  std::vector<std::size_t> order(t.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return t.stamps[a] < t.stamps[b]; });
+  Trajectory sorted;
+  sorted.stamps.reserve(t.size());
+  sorted.poses.reserve(t.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    if (k > 0 && t.stamps[order[k]] == t.stamps[order[k - 1]])
+      throw std::invalid_argument("poses " + std::to_string(order[k - 1]) + " and " +
+                                  std::to_string(order[k]) + " have the same stamp");
+    sorted.stamps.push_back(t.stamps[order[k]]);
+    sorted.poses.push_back(t.poses[order[k]]);
+  }
+  return sorted;
+}
+
+}  // namespace metricmap
