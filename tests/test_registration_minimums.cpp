@@ -33,6 +33,27 @@ Cloud velo(std::size_t frame) {
   return scan;
 }
 
+// Sensor presets of the registration cloud: KITTI's HDL-64E band (3-40 m, above z = -1.3 m)
+// and no band; points far apart stay one per cell, so the kept count is the band's count.
+TEST(RegistrationCloud, SensorPresets) {
+  Cloud scan;
+  const float pts[][3] = {{2, 0, 0},   {5, 0, 0},    {0, 10, 0.5},  {45, 0, 0},
+                          {0, 20, -2}, {-30, 0, -1}, {0, -39, 3.0}, {1, 1, 0}};
+  for (const auto& p : pts) scan.push_back(pcl::PointXYZ(p[0], p[1], p[2]));
+  const RegistrationCloudParams kitti = RegistrationCloudParams::kittiHdl64();
+  EXPECT_EQ(registrationCloud(scan, kitti)->size(), 4u);  // 5 m, 10 m, 30 m at -1, 39 m
+  EXPECT_EQ(registrationCloud(scan)->size(), 4u);         // the KITTI overload
+  EXPECT_EQ(registrationCloud(scan, RegistrationCloudParams::unbanded())->size(), 8u);
+  RegistrationCloudParams indoor;
+  indoor.max_range = 25.0f;
+  EXPECT_EQ(registrationCloud(scan, indoor)->size(), 5u);  // 2, 5, 10, 20 m and (1, 1)
+  indoor.voxel = 0.0f;
+  EXPECT_THROW(registrationCloud(scan, indoor), std::invalid_argument);
+  indoor.voxel = 0.2f;
+  indoor.max_range = 0.0f;
+  EXPECT_THROW(registrationCloud(scan, indoor), std::invalid_argument);
+}
+
 /// Frame 0's registration cloud in the world (the target of frames 1-5).
 Cloud::Ptr frameZeroTarget(const Eigen::Isometry3d& tr, const Eigen::Isometry3d& pose0) {
   auto target = std::make_shared<Cloud>();

@@ -209,7 +209,7 @@ TEST(ScanMapper, BadConfigurationsAreRefused) {
   bad([](ScanMapperConfig& c) { c.map_resolution = 0; });
   bad([](ScanMapperConfig& c) { c.up = Eigen::Vector3f::Zero(); });
   bad([](ScanMapperConfig& c) { c.registration.target_voxel = -0.2; });
-  bad([](ScanMapperConfig& c) { c.registration.structure_voxel = 0.0f; });
+  bad([](ScanMapperConfig& c) { c.registration.cloud.voxel = 0.0f; });
   bad([](ScanMapperConfig& c) { c.registration.refine.max_iterations = 0; });
   EXPECT_THROW(parseRegistrationTarget("last"), std::invalid_argument);
   EXPECT_EQ(parseRegistrationTarget("previous"), RegistrationTarget::Previous);

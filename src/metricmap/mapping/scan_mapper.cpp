@@ -51,8 +51,7 @@ void validateScanMapperConfig(const ScanMapperConfig& c) {
   require(std::isfinite(c.map_resolution) && c.map_resolution > 0.0,
           "map resolution must be a finite number > 0, got " + str(c.map_resolution));
   const RegistrationConfig& r = c.registration;
-  require(std::isfinite(r.structure_voxel) && r.structure_voxel > 0.0f,
-          "registration voxel must be a finite number > 0, got " + str(r.structure_voxel));
+  validateRegistrationCloudParams(r.cloud);
   require(std::isfinite(r.target_voxel) && r.target_voxel > 0.0,
           "registration target voxel must be a finite number > 0, got " + str(r.target_voxel));
   require(std::isfinite(r.refine.max_correspondence) && r.refine.max_correspondence > 0.0,
@@ -129,7 +128,7 @@ FrameReport ScanMapper::addScan(const Cloud& scan_in_sensor, const Eigen::Isomet
 
   if (reg.enabled && report.index > 0) {
     t = std::chrono::steady_clock::now();
-    const Cloud::Ptr source = registrationCloud(kept, reg.structure_voxel);
+    const Cloud::Ptr source = registrationCloud(kept, reg.cloud);
     if (source->size() < reg.min_points || target_->size() < reg.min_points) {
       throw InputError("scan " + std::to_string(report.index) + ": registration needs at least " +
                        std::to_string(reg.min_points) + " points in the scan and the target (" +
@@ -209,7 +208,7 @@ void ScanMapper::updateTarget(const Cloud& kept_in_sensor, const Eigen::Isometry
   const RegistrationConfig& reg = config_.registration;
   if (reg.target == RegistrationTarget::First && !used_.empty()) return;
   Cloud structure;
-  pcl::transformPointCloud(*registrationCloud(kept_in_sensor, reg.structure_voxel), structure,
+  pcl::transformPointCloud(*registrationCloud(kept_in_sensor, reg.cloud), structure,
                            pose.matrix().cast<float>());
   if (reg.target == RegistrationTarget::Map) {
     *target_ += structure;

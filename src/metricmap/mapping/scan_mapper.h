@@ -37,9 +37,10 @@ struct RegistrationConfig {
   bool enabled = false;
   RefineParams refine;                                  ///< ICP or GICP, distances, iterations
   RegistrationTarget target = RegistrationTarget::Map;  ///< what a scan is aligned to
-  float structure_voxel = 0.2f;  ///< cell of the registration cloud of each scan (m)
-  double target_voxel = 0.2;     ///< cell of the accumulated target with `Map` (m)
-  std::size_t min_points = 20;   ///< fewer registration points in source or target: an error
+  /// Which points of each scan register, and their cell (a sensor preset: KITTI's by default).
+  RegistrationCloudParams cloud = RegistrationCloudParams::kittiHdl64();
+  double target_voxel = 0.2;    ///< cell of the accumulated target with `Map` (m)
+  std::size_t min_points = 20;  ///< fewer registration points in source or target: an error
 };
 
 /// \brief The 2D log-odds occupancy grid of a ScanMapper: the kept points whose height above

@@ -78,18 +78,44 @@ RefineMethod parseRefineMethod(const std::string& name) {
   throw std::invalid_argument("refine method must be icp or gicp, got '" + name + "'");
 }
 
+RegistrationCloudParams RegistrationCloudParams::kittiHdl64() {
+  RegistrationCloudParams p;
+  p.min_range = 3.0f;
+  p.max_range = 40.0f;
+  p.min_z = -1.3f;
+  return p;
+}
+
+void validateRegistrationCloudParams(const RegistrationCloudParams& p) {
+  if (std::isnan(p.min_range) || std::isnan(p.max_range) || std::isnan(p.min_z) ||
+      !(p.max_range > p.min_range))
+    throw std::invalid_argument(
+        "registration cloud: the range band must be numbers with "
+        "max_range > min_range");
+  if (!std::isfinite(p.voxel) || !(p.voxel > 0.0f))
+    throw std::invalid_argument("registration voxel must be a finite number > 0");
+}
+
 pcl::PointCloud<pcl::PointXYZ>::Ptr registrationCloud(const pcl::PointCloud<pcl::PointXYZ>& velo,
                                                       float voxel) {
+  RegistrationCloudParams p = RegistrationCloudParams::kittiHdl64();
+  p.voxel = voxel;
+  return registrationCloud(velo, p);
+}
+
+pcl::PointCloud<pcl::PointXYZ>::Ptr registrationCloud(const pcl::PointCloud<pcl::PointXYZ>& scan,
+                                                      const RegistrationCloudParams& params) {
+  validateRegistrationCloudParams(params);
   auto structure = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  for (const auto& p : velo) {
+  for (const auto& p : scan) {
     const float r = p.getVector3fMap().norm();
-    if (r > 3.0f && r < 40.0f && p.z > -1.3f) structure->push_back(p);
+    if (r > params.min_range && r < params.max_range && p.z > params.min_z) structure->push_back(p);
   }
   structure->width = static_cast<std::uint32_t>(structure->size());
   structure->height = 1;
   OccupancyGrid<pcl::PointXYZ> grid;
   grid.setOrigin(GridOrigin::WorldAligned);
-  grid.setCellSize(voxel);
+  grid.setCellSize(params.voxel);
   grid.setInputCloud(structure);
   auto out = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   grid.filter(*out);

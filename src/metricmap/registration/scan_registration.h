@@ -4,6 +4,7 @@
 /// pcl::GeneralizedIterativeClosestPoint; pose perturbation and pose errors for experiments.
 
 #include <cstddef>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -38,10 +39,34 @@ struct RefineResult {
 /// stray points, with nothing to tell it from a registration: refineScanPose refuses it.
 std::size_t minRefinePairs(std::size_t scan_points);
 
-/// \brief The part of a velodyne scan (its own frame, z up) that registration uses: points
-/// 3-40 m away and above the ground (z > -1.3 m; the HDL-64E sits 1.73 m up), averaged in
-/// `voxel` cells with OccupancyGrid (WorldAligned). The ground's rings travel with the sensor and
-/// pull point matching towards zero motion, so they are left out.
+/// \brief Which points of a scan (its own frame, z up) registration uses: those with a range in
+/// (min_range, max_range) and z > min_z, averaged in `voxel` cells. A car's ground rings travel
+/// with the sensor and pull point matching towards zero motion, so a sensor at a known height
+/// leaves them out.
+struct RegistrationCloudParams {
+  float min_range = 0.0f;                                    ///< m (> the carrier's body)
+  float max_range = std::numeric_limits<float>::infinity();  ///< m
+  float min_z = -std::numeric_limits<float>::infinity();     ///< m, sensor frame
+  float voxel = 0.2f;                                        ///< m (> 0)
+
+  /// \brief KITTI's Velodyne HDL-64E, 1.73 m up on a car: 3-40 m, above the ground
+  /// (z > -1.3 m), 0.2 m cells.
+  static RegistrationCloudParams kittiHdl64();
+  /// \brief Every point (no range or height band), 0.2 m cells: a sensor whose mounting is
+  /// unknown (a hand-carried scanner).
+  static RegistrationCloudParams unbanded() { return {}; }
+};
+
+/// \brief \throws std::invalid_argument naming the value: NaN bounds, max_range <= min_range,
+/// a voxel that is not finite and > 0
+void validateRegistrationCloudParams(const RegistrationCloudParams& params);
+
+/// \brief The registration cloud of a scan (see RegistrationCloudParams), averaged with
+/// OccupancyGrid (WorldAligned).
+pcl::PointCloud<pcl::PointXYZ>::Ptr registrationCloud(const pcl::PointCloud<pcl::PointXYZ>& scan,
+                                                      const RegistrationCloudParams& params);
+
+/// \brief registrationCloud with KITTI's preset and a voxel of `voxel`.
 pcl::PointCloud<pcl::PointXYZ>::Ptr registrationCloud(const pcl::PointCloud<pcl::PointXYZ>& velo,
                                                       float voxel = 0.2f);
 
