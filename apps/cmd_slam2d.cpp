@@ -132,6 +132,8 @@ void run(const Slam2DOptions& o) {
       slam.addScan(*scan.laser, odometry, scan.stamp);
     } catch (const CapacityError& e) {  // the maps outgrew the budget: name the scan
       throw CapacityError(scan.name + ": " + e.what());
+    } catch (const std::invalid_argument& e) {  // odometry beyond reach: name the scan
+      throw InputError(scan.name + ": " + e.what());
     }
     trajectory.stamps.push_back(scan.stamp);
     if (progress && (k % 250 == 0 || k + 1 == frames.size()))

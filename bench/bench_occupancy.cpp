@@ -97,6 +97,31 @@ void BM_LogOddsMapFreshScanPortable(benchmark::State& state) {
   BM_LogOddsMapFreshScan(state);
 }
 
+// The same scan cast on range(1) threads (setThreads; the same map for every count), wall time.
+void BM_LogOddsMapFreshScanThreads(benchmark::State& state) {
+  const Scan& s = scans()[0];
+  LogOddsMap map(paramsOf(state));
+  map.setThreads(static_cast<unsigned>(state.range(1)));
+  for (auto _ : state) {
+    map.clear();
+    map.insertScan(s.points, s.origin);
+  }
+  ourCounters(state, map, s.points.size());
+}
+
+// A new map per scan (what a user calling it once gets: fresh memory every time), threads.
+void BM_LogOddsMapNewObjectThreads(benchmark::State& state) {
+  const Scan& s = scans()[0];
+  std::size_t known = 0;
+  for (auto _ : state) {
+    LogOddsMap map(paramsOf(state));
+    map.setThreads(static_cast<unsigned>(state.range(1)));
+    map.insertScan(s.points, s.origin);
+    known = map.knownVoxels();
+  }
+  state.counters["known_voxels"] = static_cast<double>(known);
+}
+
 void BM_OctomapFreshScan(benchmark::State& state) {
   const Scan& s = scans()[0];
   const octomap::point3d origin(s.origin.x(), s.origin.y(), s.origin.z());
@@ -111,6 +136,18 @@ void BM_OctomapFreshScan(benchmark::State& state) {
 // Frames 0-5 in turn into one map that keeps growing (the map of a drive).
 void BM_LogOddsMapAccumulated(benchmark::State& state) {
   LogOddsMap map(paramsOf(state));
+  std::size_t i = 0, points = 0;
+  for (auto _ : state) {
+    const Scan& s = scans()[i++ % 6];
+    map.insertScan(s.points, s.origin);
+    points += s.points.size();
+  }
+  ourCounters(state, map, points / std::max<std::size_t>(1, state.iterations()));
+}
+
+void BM_LogOddsMapAccumulatedThreads(benchmark::State& state) {
+  LogOddsMap map(paramsOf(state));
+  map.setThreads(static_cast<unsigned>(state.range(1)));
   std::size_t i = 0, points = 0;
   for (auto _ : state) {
     const Scan& s = scans()[i++ % 6];
@@ -138,11 +175,31 @@ BENCHMARK(BM_LogOddsMapFreshScanPortable)
     ->Arg(100)
     ->Unit(benchmark::kMillisecond)
     ->MinTime(1.0);
+BENCHMARK(BM_LogOddsMapFreshScanThreads)
+    ->Args({200, 1})
+    ->Args({200, 2})
+    ->Args({100, 1})
+    ->Args({100, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(1.0);
+BENCHMARK(BM_LogOddsMapNewObjectThreads)
+    ->Args({200, 1})
+    ->Args({200, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(1.0);
 BENCHMARK(BM_OctomapFreshScan)->Arg(200)->Arg(100)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_LogOddsMapAccumulated)
     ->Arg(200)
     ->Arg(100)
     ->Unit(benchmark::kMillisecond)
+    ->Iterations(24);
+BENCHMARK(BM_LogOddsMapAccumulatedThreads)
+    ->Args({200, 1})
+    ->Args({200, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
     ->Iterations(24);
 BENCHMARK(BM_OctomapAccumulated)->Arg(200)->Arg(100)->Unit(benchmark::kMillisecond)->Iterations(6);
 

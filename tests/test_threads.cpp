@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -16,8 +18,11 @@
 #include "metricmap/detail/thread_team.h"
 #include "metricmap/grid/occupancy_grid.h"
 #include "metricmap/io/cloud_reader.h"
+#include "metricmap/occupancy/log_odds_map.h"
+#include "metricmap/occupancy/octomap_io.h"
 #include "metricmap/octree/adaptive_octree.h"
 #include "metricmap/registration/lidar_odometry.h"
+#include "temp_dir.h"
 #include "test_data.h"
 
 namespace metricmap {
@@ -86,6 +91,60 @@ TEST(Threads, GridCellsAndMeansDoNotDependOnTheThreadCount) {
         expectSameGrid(one, many, threads);
       }
     }
+  }
+}
+
+// Occupancy: the beams of a scan cast on 1, 2, 3 and 5 threads give the same voxels, log-odds,
+// visiting order, report and .bt bytes (OctoMap's model at 0.2 m / 50 m; two scans, so that the
+// second updates voxels the first made).
+TEST(Threads, LogOddsMapDoesNotDependOnTheThreadCount) {
+  const auto cloud = kittiFrames();
+  Cloud second = *cloud;
+  for (auto& p : second) p.y += 0.5f;
+  auto build = [&](unsigned threads, std::vector<ScanInsertReport>& reports) {
+    LogOddsParams params;
+    params.resolution = 0.2;
+    params.max_range = 50.0;
+    LogOddsMap map(params);
+    map.setThreads(threads);
+    reports.push_back(map.insertScan(*cloud, Eigen::Vector3f(100.0f, 0.0f, 0.0f)));
+    reports.push_back(map.insertScan(second, Eigen::Vector3f(60.0f, 1.0f, 0.5f)));
+    return map;
+  };
+  auto bytes = [](const LogOddsMap& map, const std::string& dir, unsigned threads) {
+    const std::string path = dir + "/t" + std::to_string(threads) + ".bt";
+    writeOctomap(map, path);
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  TempDir dir("threads_bt");
+  std::vector<ScanInsertReport> one_reports;
+  const LogOddsMap one = build(1, one_reports);
+  std::vector<std::pair<VoxelKey, float>> one_voxels;
+  one.forEachKnown([&](const VoxelKey& k, float l) { one_voxels.emplace_back(k, l); });
+  ASSERT_GT(one_voxels.size(), 500000u);
+  ASSERT_GT(one_reports[0].beams_cut, 1000u);
+  const std::string one_bt = bytes(one, dir.path.string(), 1);
+  for (unsigned threads : {2u, 3u, 5u}) {
+    std::vector<ScanInsertReport> reports;
+    const LogOddsMap many = build(threads, reports);
+    for (std::size_t s = 0; s < 2; ++s) {
+      EXPECT_EQ(reports[s].non_finite, one_reports[s].non_finite) << threads;
+      EXPECT_EQ(reports[s].beams, one_reports[s].beams) << threads;
+      EXPECT_EQ(reports[s].beams_cut, one_reports[s].beams_cut) << threads;
+      EXPECT_EQ(reports[s].hit_voxels, one_reports[s].hit_voxels) << threads;
+      EXPECT_EQ(reports[s].miss_voxels, one_reports[s].miss_voxels) << threads;
+    }
+    std::size_t k = 0;
+    bool same = many.knownVoxels() == one.knownVoxels();
+    many.forEachKnown([&](const VoxelKey& key, float l) {
+      if (k >= one_voxels.size() || !(key == one_voxels[k].first) ||
+          std::memcmp(&l, &one_voxels[k].second, sizeof l) != 0)
+        same = false;
+      ++k;
+    });
+    EXPECT_TRUE(same && k == one_voxels.size()) << threads << " threads";
+    EXPECT_TRUE(bytes(many, dir.path.string(), threads) == one_bt) << threads << " threads";
   }
 }
 

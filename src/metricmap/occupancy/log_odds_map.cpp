@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "metricmap/common/memory_budget.h"
+#include "metricmap/detail/parallel.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/occupancy/ray_kernel.h"
 
@@ -85,11 +86,33 @@ ScanInsertReport LogOddsMap::insertRaw(const float* xyz, std::size_t stride_byte
   // Memory budget: each block a scan touches costs its work space (grown by doubling) and, if
   // new, a map block (the block vector also grows by doubling) and hash slots.
   const std::uint64_t budget = memoryBudget();
-  const std::uint64_t used = memory().reserved_bytes + scratch_.dense.capacity() * 8;
+  std::uint64_t used = memory().reserved_bytes + scratch_.dense.capacity() * 8;
+  for (const detail::ScanUpdate& s : thread_scratch_) used += s.dense.capacity() * 8;
   const std::uint64_t per_block =
       2 * sizeof(detail::ScanBlock) + 2 * sizeof(detail::VoxelBlock) + 64;
   in.max_blocks = budget > used ? static_cast<std::size_t>((budget - used) / per_block) : 0;
-  const detail::RayCastCounts counts = detail::castRays(in, scratch_);
+  // Beams in contiguous shares, one per thread; the shares' marks united in thread order.
+  const unsigned threads = resolveThreads(threads_, in.count, 8192);
+  std::vector<detail::RayCastCounts> shares(threads);
+  if (thread_scratch_.size() < threads - 1) thread_scratch_.resize(threads - 1);
+  parallelRun(threads, [&](unsigned t) {
+    detail::RayCastInput part = in;
+    const auto [begin, end] = chunkOf(in.count, threads, t);
+    part.xyz = in.xyz == nullptr
+                   ? nullptr
+                   : reinterpret_cast<const float*>(reinterpret_cast<const unsigned char*>(in.xyz) +
+                                                    begin * in.stride_bytes);
+    part.count = end - begin;
+    shares[t] = detail::castRays(part, t == 0 ? scratch_ : thread_scratch_[t - 1]);
+  });
+  detail::RayCastCounts counts;
+  for (unsigned t = 0; t < threads; ++t) {
+    if (t > 0)
+      detail::uniteScanUpdates(scratch_, thread_scratch_[t - 1], in.max_blocks, in.resolution);
+    counts.non_finite += shares[t].non_finite;
+    counts.beams += shares[t].beams;
+    counts.cut += shares[t].cut;
+  }
   ScanInsertReport report;
   report.points = count;
   report.non_finite = counts.non_finite;
@@ -104,7 +127,14 @@ void LogOddsMap::applyScan(ScanInsertReport& report) {
   // at most one (geometric) growth per scan
   const std::size_t need = blocks_.size() + scratch_.blocks.size();
   if (need > blocks_.capacity()) blocks_.reserve(std::max(need, 2 * blocks_.capacity()));
-  for (const detail::ScanBlock& sb : scratch_.blocks) {
+  // New blocks join the map in key order: the same order however the beams were shared out.
+  order_.resize(scratch_.blocks.size());
+  for (std::size_t k = 0; k < order_.size(); ++k) order_[k] = static_cast<std::uint32_t>(k);
+  std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return scratch_.blocks[a].key < scratch_.blocks[b].key;
+  });
+  for (const std::uint32_t k : order_) {
+    const detail::ScanBlock& sb = scratch_.blocks[k];
     VoxelBlock& b = blockFor(sb.key);
     for (int w = 0; w < kBlockWords; ++w) {
       std::uint64_t h = sb.hit[w];

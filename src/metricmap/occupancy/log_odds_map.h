@@ -45,6 +45,9 @@ struct LogOddsMemory {
 /// every voxel on a beam between the sensor's voxel and the endpoint's is a miss, the
 /// endpoint's voxel a hit; a beam longer than max_range is cut there and marks no hit; within
 /// one scan each voxel is updated once and a hit wins over a miss. Log-odds are float, clamped.
+/// An insert may cast its beams on several threads (setThreads): each casts a share of the
+/// points, the shares' voxel sets are united, and the map is updated once, in block-key order —
+/// the same map, in the same order, for every thread count.
 /// \note Thread safety: const members may run concurrently; inserts need exclusive access.
 class LogOddsMap {
  public:
@@ -136,6 +139,11 @@ class LogOddsMap {
   /// \brief Forget every voxel.
   void clear();
 
+  /// \brief Threads that cast a scan's beams (0: all hardware threads; 1 by default). Scans
+  /// of fewer than 8192 points per thread use fewer threads. The result does not depend on it.
+  void setThreads(unsigned threads) { threads_ = threads; }
+  unsigned threads() const { return threads_; }
+
  private:
   detail::VoxelBlock& blockFor(std::uint64_t block_key);
   /// Add the known voxels of `known` into `blk`; value_of(index) gives each one's log-odds,
@@ -150,6 +158,9 @@ class LogOddsMap {
   detail::BlockHashIndex index_;
   std::size_t known_ = 0;
   detail::ScanUpdate scratch_;
+  std::vector<detail::ScanUpdate> thread_scratch_;  ///< threads 1.. of a threaded insert
+  std::vector<std::uint32_t> order_;                ///< the scan's blocks in key order
+  unsigned threads_ = 1;
 };
 
 }  // namespace metricmap

@@ -582,6 +582,19 @@ constexpr std::int64_t kDenseWordLimit = std::int64_t{1} << 23;  // 2 x 64 MiB o
 
 }  // namespace
 
+void uniteScanUpdates(ScanUpdate& into, const ScanUpdate& from, std::size_t max_blocks,
+                      double resolution) {
+  Marker marker(into, max_blocks, resolution);
+  for (const ScanBlock& b : from.blocks) {
+    const VoxelKey k = unpackVoxelKey(b.key);
+    ScanBlock& t = marker.blockAt(k.x, k.y, k.z);
+    for (int w = 0; w < kBlockWords; ++w) {
+      t.free[w] |= b.free[w];
+      t.hit[w] |= b.hit[w];
+    }
+  }
+}
+
 RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
   out.clear();
   out.ends.clear();

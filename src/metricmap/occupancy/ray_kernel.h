@@ -44,6 +44,11 @@ struct RayCastCounts {
 /// space
 RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out);
 
+/// \brief Unite `from`'s marks into `into` (blocks new to `into` appended in `from`'s order).
+/// \throws CapacityError as castRays does when `into` would exceed max_blocks
+void uniteScanUpdates(ScanUpdate& into, const ScanUpdate& from, std::size_t max_blocks,
+                      double resolution);
+
 /// \brief The walks castRays can take; both mark the same voxels, bit for bit.
 enum class RayPath {
   Simd,      ///< the default: SSE2 (x86-64), four-lane AVX2 where the CPU has it

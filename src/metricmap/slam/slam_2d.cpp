@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <deque>
 #include <stdexcept>
 #include <unordered_set>
@@ -388,6 +389,17 @@ void Slam2D::addScan(const LaserScan& scan, const std::optional<Pose2D>& odometr
     predicted = d.local.back();
     if (odometry && d.last_odometry)
       predicted = compose(predicted, compose(inverse(*d.last_odometry), *odometry));
+  }
+  // A prediction beyond the grids' reach (2^30 cells of the finest resolution, and
+  // well inside what the cell arithmetic holds) is refused before anything changes.
+  const double reach = 1e6;
+  if (!(std::fabs(predicted.x) <= reach && std::fabs(predicted.y) <= reach &&
+        std::isfinite(predicted.theta))) {
+    char msg[160];
+    std::snprintf(msg, sizeof msg,
+                  "odometry moves the robot beyond +-1e6 m (predicted position (%g, %g))",
+                  predicted.x, predicted.y);
+    throw std::invalid_argument(msg);
   }
   if (odometry) d.last_odometry = odometry;
 
