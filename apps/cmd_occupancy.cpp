@@ -48,6 +48,8 @@ struct OccupancyOptions {
   std::string out_bt, out_ot, out_cloud, out_map, map_preview, band, format = "table";
   std::string pcd_format = "binary";
   double resolution = kUnset, max_range = kUnset;
+  unsigned threads = 1;
+  bool threads_given = false;
   bool resolution_given = false, max_range_given = false, distributed = false;
   bool sequence_given = false, world_given = false, pcd_format_given = false;
 };
@@ -172,11 +174,9 @@ void reduceTotals(const Ranks& ranks, Totals& tot) {
 /// options); --band only shapes --out-map.
 void refuseIgnoredOptions(const OccupancyOptions& o, bool from_file, bool kitti, bool source) {
   const std::vector<std::pair<const char*, bool>> scan_options = {
-      {"--resolution", o.resolution_given},
-      {"--max-range", o.max_range_given},
-      {"--frames", !o.frames.empty()},
-      {"--sequence", o.sequence_given},
-      {"--world", o.world_given}};
+      {"--resolution", o.resolution_given}, {"--max-range", o.max_range_given},
+      {"--frames", !o.frames.empty()},      {"--sequence", o.sequence_given},
+      {"--world", o.world_given},           {"--threads", o.threads_given}};
   for (const auto& [option, given] : scan_options) {
     if (!given) continue;
     const std::string name = option;
@@ -255,6 +255,7 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
   auto t = std::chrono::steady_clock::now();
   LogOddsMap map = from_file ? readOctomapQuietly(o.inputs[0], exportUse(o)) : LogOddsMap(params);
   if (from_file) tot.load_s = secondsSince(t);
+  map.setThreads(o.threads);
   if (!from_file) castScans(o, ranks, map, tot);
   if (ranks.distributed()) {
     map = ranks.reduce(std::move(map));
@@ -338,6 +339,11 @@ void addOccupancyCommand(CLI::App& app) {
       ->check(kCellEdge);
   sub->add_option("--max-range", o->max_range, "Beams are cut here and mark no hit (m), > 0")
       ->check(kFinitePositive);
+  sub->add_option("--threads", o->threads,
+                  "Threads casting each scan's beams (0: all hardware threads); the map does not "
+                  "depend on it")
+      ->check(countIn(0, 1024))
+      ->capture_default_str();
   sub->add_option("--sequence", o->sequence, "KITTI sequence")->capture_default_str();
   sub->add_option("--frames", o->frames, "KITTI or scan source frames, e.g. 0-5,15");
   sub->add_option("--world", o->world, "KITTI world: velodyne (z up) or camera (y down)")
@@ -363,6 +369,7 @@ void addOccupancyCommand(CLI::App& app) {
     opts.max_range_given = sub->count("--max-range") > 0;
     opts.sequence_given = sub->count("--sequence") > 0;
     opts.world_given = sub->count("--world") > 0;
+    opts.threads_given = sub->count("--threads") > 0;
     opts.pcd_format_given = sub->count("--pcd-format") > 0;
     const bool from_file = opts.inputs.size() == 1 &&
                            (endsWith(opts.inputs[0], ".bt") || endsWith(opts.inputs[0], ".ot"));

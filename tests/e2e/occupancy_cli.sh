@@ -21,6 +21,13 @@ occ=$(grep -o '"occupied": [0-9]*' "$out/run.json" | tail -1)
 "$MM" occupancy "$out/m.bt" --format json >"$out/back.json" 2>"$out/back.err"
 check "bt read back: $occ" grep -q "$occ" "$out/back.json"
 check "bt read quietly" test ! -s "$out/back.err"
+# Beams cast on three threads: the same files, byte for byte.
+"$MM" occupancy "$kitti" --frames 0-1 --resolution 0.2 --max-range 50 --threads 3 \
+  --out "$out/m3.bt" --out-cloud "$out/occ3.pcd" >/dev/null
+check "--threads 3: the same .bt" cmp "$out/m.bt" "$out/m3.bt"
+check "--threads 3: the same voxel centres, in the same order" cmp "$out/occ.pcd" "$out/occ3.pcd"
+expect 2 "--threads: '$out/m.bt' is a map" -- "$MM" occupancy "$out/m.bt" --threads 2 \
+  --out-cloud "$out/never.pcd"
 
 # The mapping pipeline (metricmap kitti, ScanMapper) builds the same 3D map and trinary map as
 # metricmap occupancy from the same frames in the velodyne world: byte for byte.
