@@ -1,4 +1,7 @@
-// metricmap info FILE...: format, fields, points, NaN count, bounds.
+// metricmap info FILE...: format, fields, points, NaN count, bounds; for bags (.db3, .mcap,
+// rosbag2 folders): topics, types, message counts and time spans.
+#include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <sstream>
 
@@ -7,6 +10,7 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "metricmap/io/bag_reader.h"
 #include "table.h"
 
 namespace metricmap::cli {
@@ -23,7 +27,55 @@ std::string join(const std::vector<std::string>& v) {
   return s;
 }
 
+// Nanoseconds since the epoch as exact seconds ("1673400471.837873222").
+std::string seconds(std::int64_t ns) {
+  const bool negative = ns < 0;
+  const std::uint64_t a =
+      negative ? 0 - static_cast<std::uint64_t>(ns) : static_cast<std::uint64_t>(ns);
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%s%llu.%09llu", negative ? "-" : "",
+                static_cast<unsigned long long>(a / 1000000000ULL),
+                static_cast<unsigned long long>(a % 1000000000ULL));
+  return buf;
+}
+
+void runBagInfo(const InfoOptions& o) {
+  nlohmann::json records = nlohmann::json::array();
+  Table table({"bag", "format", "topic", "type", "messages", "start_s", "end_s", "duration_s"});
+  for (const std::string& f : o.files) {
+    const std::unique_ptr<BagReader> bag = openBag(f);
+    nlohmann::json topics = nlohmann::json::array();
+    for (const BagTopic& t : bag->topics()) {
+      const bool any = t.messages > 0;
+      const std::string start = any ? seconds(t.first_ns) : "-";
+      const std::string end = any ? seconds(t.last_ns) : "-";
+      const std::string span = any ? seconds(t.last_ns - t.first_ns) : "-";
+      table.addRow(
+          {f, bag->format(), t.name, t.type, std::to_string(t.messages), start, end, span});
+      nlohmann::json j = {
+          {"topic", t.name}, {"type", t.type}, {"encoding", t.encoding}, {"messages", t.messages}};
+      if (any) {
+        j["start_ns"] = t.first_ns;
+        j["end_ns"] = t.last_ns;
+        j["duration_s"] = static_cast<double>(t.last_ns - t.first_ns) * 1e-9;
+      }
+      topics.push_back(j);
+    }
+    records.push_back({{"file", f}, {"format", bag->format()}, {"topics", topics}});
+  }
+  if (o.format == "json") {
+    emit(records.dump(2) + "\n", "");
+  } else {
+    emitTable(table, o.format);
+  }
+}
+
 void runInfo(const InfoOptions& o) {
+  std::size_t bags = 0;
+  for (const std::string& f : o.files) bags += looksLikeBag(f) ? 1 : 0;
+  if (bags > 0 && bags != o.files.size())
+    throw UsageError("info: give either bags or point cloud files, not both");
+  if (bags > 0) return runBagInfo(o);
   nlohmann::json records = nlohmann::json::array();
   Table table({"file", "format", "fields", "points", "nan_inf", "skipped_lines", "min", "max"});
   for (const std::string& f : o.files) {
@@ -60,8 +112,12 @@ void runInfo(const InfoOptions& o) {
 
 void addInfoCommand(CLI::App& app) {
   auto o = std::make_shared<InfoOptions>();
-  CLI::App* sub = app.add_subcommand("info", "Format, fields, points, NaN count and bounds");
-  sub->add_option("files", o->files, "Point cloud files (.pcd, .ply, .bin, .npy)")->required();
+  CLI::App* sub = app.add_subcommand(
+      "info", "Format, fields, points, NaN count and bounds; a bag's topics, types, counts, times");
+  sub->add_option("files", o->files,
+                  "Point cloud files (.pcd, .ply, .bin, .npy), or ROS bags (.db3, .mcap, rosbag2 "
+                  "folders)")
+      ->required();
   addFormatOption(*sub, o->format, {"table", "csv", "json"});
   sub->callback([o] { runInfo(*o); });
 }

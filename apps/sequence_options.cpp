@@ -5,20 +5,27 @@
 
 #include "metricmap/common/format_number.h"
 #include "metricmap/common/parse_number.h"
+#include "metricmap/datasets/bag_source.h"
 #include "metricmap/datasets/carmen_source.h"
 #include "metricmap/datasets/folder_source.h"
 #include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/exceptions.h"
+#include "metricmap/io/bag_reader.h"
 
 namespace metricmap::cli {
 
 void addSourceOptions(CLI::App& app, SourceOptions& o) {
+  // The bag topic a command takes by default: the one kind of scan it reads.
+  o.bag_scans = app.get_name() == "slam2d"     ? "laser"
+                : app.get_name() == "odometry" ? "cloud"
+                                               : "any";
   app.add_option("source", o.path,
                  "Scans: a KITTI odometry root (sequences/), a folder of .pcd/.ply/.bin/.npy "
-                 "scans, a .txt list of scans, or a CARMEN log (.clf/.log, .gz/.bz2)")
+                 "scans, a .txt list of scans, a CARMEN log (.clf/.log, .gz/.bz2), or a ROS "
+                 "bag (.db3, .mcap, a rosbag2 folder)")
       ->required();
   app.add_option("--source-format", o.format, "How to read SOURCE")
-      ->check(CLI::IsMember({"auto", "kitti", "folder", "carmen"}))
+      ->check(CLI::IsMember({"auto", "kitti", "folder", "carmen", "bag"}))
       ->capture_default_str();
   app.add_option("--sequence", o.sequence, "KITTI sequence number")->capture_default_str();
   app.add_option("--frames", o.frames,
@@ -29,6 +36,9 @@ void addSourceOptions(CLI::App& app, SourceOptions& o) {
       ->check(CLI::ExistingFile);
   app.add_option("--times", o.times, "Scan stamps, one per line; default: times.txt")
       ->check(CLI::ExistingFile);
+  app.add_option("--topic", o.topic,
+                 "Bag topic (sensor_msgs/msg/PointCloud2 or LaserScan); default: the bag's only "
+                 "one");
 }
 
 void checkSourceOptions(const CLI::App& app, const SourceOptions& o) {
@@ -36,6 +46,7 @@ void checkSourceOptions(const CLI::App& app, const SourceOptions& o) {
   const std::string kind = scanSourceKind(o.path, o.format);
   const std::string what = kind == "carmen"   ? "a CARMEN log"
                            : kind == "folder" ? "a folder or list of scans"
+                           : kind == "bag"    ? "a bag"
                                               : "this source";
   refuseIgnored(app, "--sequence", kind == "kitti" || kind.empty(),
                 "on " + what + ": only a KITTI root has sequences");
@@ -43,6 +54,9 @@ void checkSourceOptions(const CLI::App& app, const SourceOptions& o) {
     refuseIgnored(app, option, kind != "carmen",
                   "on a CARMEN log: its lines carry the scans' stamps and odometry poses");
   }
+  refuseIgnored(app, "--times", kind != "bag", "on a bag: its messages carry the scans' stamps");
+  refuseIgnored(app, "--topic", kind == "bag" || kind.empty(),
+                "on " + what + ": only a bag has topics");
   if (o.frames.empty()) {
     if (app.count("--frames") > 0)
       throw CLI::ValidationError("--frames",
@@ -74,6 +88,11 @@ RolePaths sourceInputs(const SourceOptions& o) {
   // The scans themselves: a folder's or a list's, or the KITTI sequence's velodyne/ ...
   const std::filesystem::path d(o.path);
   const std::filesystem::path velodyne = d / "sequences" / o.sequence / "velodyne";
+  if (std::filesystem::is_directory(d, ec) && looksLikeBag(o.path)) {  // a rosbag2 folder
+    for (const auto& e : std::filesystem::directory_iterator(d, ec))
+      if (e.is_regular_file(ec)) in.push_back({"bag file", e.path().string()});
+    return in;
+  }
   if (std::filesystem::is_directory(velodyne, ec)) {
     for (const auto& e : std::filesystem::directory_iterator(velodyne, ec)) {
       if (e.is_regular_file(ec)) in.push_back({"scan", e.path().string()});
@@ -101,7 +120,14 @@ std::unique_ptr<ScanSource> openSource(const SourceOptions& o) {
   so.sequence = o.sequence;
   so.reference_poses = o.reference;
   so.times = o.times;
-  std::unique_ptr<ScanSource> source = openScanSource(o.path, so);
+  so.topic = o.topic;
+  so.bag_scans = o.bag_scans;
+  std::unique_ptr<ScanSource> source;
+  try {
+    source = openScanSource(o.path, so);
+  } catch (const TopicSelectionError& e) {
+    throw UsageError(e.what());
+  }
   // Lines a log source skipped are reported, never dropped silently.
   if (const auto* carmen = dynamic_cast<const CarmenSource*>(source.get()))
     for (const std::string& w : carmen->warnings()) std::cerr << "warning: " << w << "\n";

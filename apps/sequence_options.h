@@ -19,10 +19,15 @@
 namespace metricmap::cli {
 
 struct SourceOptions {
-  std::string path, format = "auto", sequence = "00", frames, reference, times;
+  std::string path, format = "auto", sequence = "00", frames, reference, times, topic;
+  /// \brief Bag topics a command takes without --topic (ScanSourceOptions::bag_scans): set by
+  /// addSourceOptions from the command's name: "laser" for slam2d, "cloud" for odometry, else
+  /// "any".
+  std::string bag_scans = "any";
 };
 
-/// \brief SOURCE (positional), --source-format, --sequence, --frames, --reference, --times.
+/// \brief SOURCE (positional), --source-format, --sequence, --frames, --reference, --times,
+/// --topic.
 void addSourceOptions(CLI::App& app, SourceOptions& o);
 /// \brief Usage checks (exit 2): the frame list, and the options the source given would ignore
 /// (--sequence on a source other than a KITTI root, --times and --reference on a CARMEN log,
@@ -31,6 +36,8 @@ void checkSourceOptions(const CLI::App& app, const SourceOptions& o);
 /// \brief The files the source reads that an output must not replace (the source path itself,
 /// the reference and times files).
 RolePaths sourceInputs(const SourceOptions& o);
+/// \brief openScanSource with the options; a bag topic that cannot be chosen (none, several,
+/// another type: TopicSelectionError) is a usage error (exit 2). \throws UsageError
 std::unique_ptr<ScanSource> openSource(const SourceOptions& o);
 /// \brief The frames --frames names, or every frame of the source.
 /// \throws InputError naming the option and the source for a frame beyond its scans

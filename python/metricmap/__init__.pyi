@@ -153,6 +153,177 @@ class LidarOdometry:
     def poses(self) -> npt.NDArray[np.float64]: ...
     def reset(self) -> None: ...
 
+class Scan:
+    @property
+    def points(self) -> npt.NDArray[np.float32]: ...
+    @property
+    def intensity(self) -> npt.NDArray[np.float32]: ...
+    @property
+    def point_times(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def stamp(self) -> float: ...
+    @property
+    def index(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def laser(self) -> Optional[Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]]: ...
+    @property
+    def odometry(self) -> Optional[npt.NDArray[np.float64]]: ...
+
+class ScanSource:
+    def __len__(self) -> int: ...
+    def __getitem__(self, index: int) -> Scan: ...
+    @property
+    def info(self) -> Dict[str, Any]: ...
+    @property
+    def path(self) -> str: ...
+
+class SequenceMapper:
+    def __init__(
+        self,
+        source: Union[ScanSource, _StrPath],
+        map_resolution: float = 0.1,
+        min_hits: int = 1,
+        min_range: float = 0.0,
+        max_range: Optional[float] = None,
+        voxel: float = 0.0,
+        min_height: Optional[float] = None,
+        max_height: Optional[float] = None,
+        keep_global_cloud: bool = False,
+        occupancy_2d_resolution: float = 0.0,
+        band_2d: Tuple[float, float] = (-0.5, 0.5),
+        occupancy_2d_max_range: Optional[float] = None,
+    ) -> None: ...
+    def build(
+        self, poses: npt.ArrayLike, frames: Optional[Iterable[int]] = None
+    ) -> SequenceMapper: ...
+    def hit_map(self) -> Dict[str, Any]: ...
+    def occupied_cells(self) -> int: ...
+    def write_map(self, path: _StrPath, kind: str = "hits") -> None: ...
+    def global_cloud(self) -> npt.NDArray[np.float32]: ...
+    def occupancy_2d(self) -> Optional[Dict[str, Any]]: ...
+    @property
+    def poses(self) -> npt.NDArray[np.float64]: ...
+
+class PoseGraph:
+    def __init__(self, dimension: int = 2) -> None: ...
+    @property
+    def dimension(self) -> int: ...
+    @property
+    def chained_guess(self) -> bool: ...
+    def add_vertex(self, id: int, pose: npt.ArrayLike) -> int: ...
+    def add_edge(
+        self,
+        from_index: int,
+        to_index: int,
+        measurement: npt.ArrayLike,
+        information: npt.ArrayLike,
+        loop: bool = False,
+    ) -> int: ...
+    def __len__(self) -> int: ...
+    @property
+    def edge_count(self) -> int: ...
+    @property
+    def poses(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def ids(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def fixed(self) -> npt.NDArray[np.bool_]: ...
+    def edges(self) -> Dict[str, npt.NDArray[Any]]: ...
+    def chi2(self) -> float: ...
+    def optimize(
+        self,
+        max_iterations: int = 100,
+        threads: int = 1,
+        odometry_loss: str = "none",
+        loop_loss: str = "huber",
+        loss_scale: float = 0.0,
+    ) -> Dict[str, Any]: ...
+    def to_g2o(self) -> str: ...
+    def write(self, path: _StrPath) -> None: ...
+
+class Slam2DConfig:
+    def __init__(self, **kwargs: Any) -> None: ...
+    min_range: float
+    max_range: float
+    voxel_filter: float
+    resolution: float
+    scans_per_submap: int
+    prob_hit: float
+    prob_miss: float
+    node_min_distance: float
+    node_min_angle_deg: float
+    node_max_time: float
+    local_linear_window: float
+    local_angular_window_deg: float
+    translation_weight: float
+    rotation_weight: float
+    refine_iterations: int
+    loop_linear_window: float
+    loop_angular_window_deg: float
+    loop_min_score: float
+    loop_max_distance: float
+    wide_min_node_gap: int
+    wide_every_n_nodes: int
+    wide_idle_nodes: int
+    wide_linear_window: float
+    wide_angular_window_deg: float
+    loop_every_n_nodes: int
+    loop_min_node_gap: int
+    loop_min_overlap: float
+    loop_max_chi2: float
+    loop_max_submaps: int
+    loop_search_points: int
+    branch_and_bound_depth: int
+    edge_translation_sigma: float
+    edge_rotation_sigma_deg: float
+    loop_translation_sigma: float
+    loop_rotation_sigma_deg: float
+    optimize_every_n_nodes: int
+    optimize_iterations: int
+    final_iterations: int
+    map_resolution: float
+    map_prob_hit: float
+    map_prob_miss: float
+    map_clamp_min: float
+    map_clamp_max: float
+    map_occupancy_threshold: float
+    map_max_range: float
+    def validate(self) -> None: ...
+
+class Slam2D:
+    def __init__(
+        self,
+        config: Optional[Slam2DConfig] = None,
+        sensor_to_base: npt.ArrayLike = (0.0, 0.0, 0.0),
+    ) -> None: ...
+    def add_scan(
+        self,
+        ranges: npt.ArrayLike,
+        angles: npt.ArrayLike,
+        odometry: Optional[npt.ArrayLike] = None,
+        stamp: Optional[float] = None,
+    ) -> None: ...
+    def finish(self) -> None: ...
+    @property
+    def trajectory(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def stamps(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def node_scans(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def loops(self) -> List[Dict[str, Any]]: ...
+    @property
+    def graph(self) -> PoseGraph: ...
+    @property
+    def stats(self) -> Dict[str, Any]: ...
+    @property
+    def config(self) -> Slam2DConfig: ...
+    def map(self) -> Dict[str, Any]: ...
+    def map_image(self, kind: str = "trinary") -> Dict[str, Any]: ...
+    def write_map(self, path: _StrPath, kind: str = "trinary") -> None: ...
+
 def read_points(path: _StrPath) -> npt.NDArray[np.float32]: ...
 def read_cloud(path: _StrPath) -> Dict[str, npt.NDArray[Any]]: ...
 def cloud_info(path: _StrPath) -> Dict[str, Any]: ...
@@ -197,6 +368,63 @@ def split_and_merge(
     bearing_sigma: float = 0.0017453292519943296,
 ) -> Dict[str, Any]: ...
 def sensor_profile(points: npt.ArrayLike) -> Dict[str, float]: ...
+def open_scan_source(
+    path: _StrPath,
+    format: str = "auto",
+    sequence: str = "00",
+    reference_poses: Optional[_StrPath] = None,
+    times: Optional[_StrPath] = None,
+    topic: Optional[str] = None,
+) -> ScanSource: ...
+def run_odometry(
+    source: Union[ScanSource, _StrPath],
+    frames: Optional[Iterable[int]] = None,
+    profile: Optional[str] = None,
+    max_range: Optional[float] = None,
+    min_range: Optional[float] = None,
+    voxel_size: Optional[float] = None,
+    deskew: str = "auto",
+    threads: int = 0,
+) -> Dict[str, Any]: ...
+def reference_sensor_poses(
+    source: Union[ScanSource, _StrPath], frames: Optional[Iterable[int]] = None
+) -> npt.NDArray[np.float64]: ...
+def run_slam2d(
+    source: Union[ScanSource, _StrPath],
+    frames: Optional[Iterable[int]] = None,
+    config: Optional[Slam2DConfig] = None,
+    loop_closure: bool = True,
+) -> Slam2D: ...
+def read_g2o(path: _StrPath) -> PoseGraph: ...
+def read_trajectory(
+    path: _StrPath, format: str = "auto"
+) -> Tuple[npt.NDArray[np.float64], Optional[npt.NDArray[np.float64]]]: ...
+def write_trajectory(
+    path: _StrPath,
+    poses: npt.ArrayLike,
+    stamps: Optional[npt.ArrayLike] = None,
+    format: str = "kitti",
+) -> None: ...
+def evaluate_trajectory(
+    estimate: npt.ArrayLike,
+    reference: npt.ArrayLike,
+    estimate_stamps: Optional[npt.ArrayLike] = None,
+    reference_stamps: Optional[npt.ArrayLike] = None,
+    align: str = "rigid",
+    max_time_diff: float = 0.01,
+) -> Dict[str, Any]: ...
+def read_relations(
+    path: _StrPath,
+) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
+def relation_error(
+    poses: npt.ArrayLike,
+    stamps: npt.ArrayLike,
+    relations: Union[_StrPath, npt.ArrayLike],
+    relation_stamps: Optional[npt.ArrayLike] = None,
+    max_time_diff: float = 0.01,
+    odometry_poses: Optional[npt.ArrayLike] = None,
+    odometry_stamps: Optional[npt.ArrayLike] = None,
+) -> Dict[str, Any]: ...
 def compare(
     paths: Iterable[_StrPath], configs: Optional[Iterable[Mapping[str, float]]] = None
 ) -> List[Dict[str, Any]]: ...

@@ -1,11 +1,11 @@
-// metricmap.bin_points: Active Neural SLAM's numpy bin_points (see bin_points_kernel.h).
+// metricmap.bin_points: Active Neural SLAM's numpy bin_points (the library's mapping/bin_points.h).
 #include <string>
 #include <vector>
 
 #include <pybind11/stl.h>
 
 #include "arrays.h"
-#include "bin_points_kernel.h"
+#include "metricmap/mapping/bin_points.h"
 
 namespace metricmap::python {
 

@@ -13,6 +13,10 @@ void initLines(py::module_& m);
 void initLogOdds(py::module_& m);
 void initOctree(py::module_& m);
 void initOdometry(py::module_& m);
+void initSequence(py::module_& m);
+void initPoseGraph(py::module_& m);
+void initSlam(py::module_& m);
+void initEvaluation(py::module_& m);
 }  // namespace metricmap::python
 
 PYBIND11_MODULE(_metricmap, m) {
@@ -29,4 +33,8 @@ PYBIND11_MODULE(_metricmap, m) {
   initLines(m);
   initLogOdds(m);
   initOdometry(m);
+  initSequence(m);
+  initPoseGraph(m);
+  initSlam(m);
+  initEvaluation(m);
 }

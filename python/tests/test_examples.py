@@ -44,3 +44,16 @@ def test_odometry_folder(tmp_path):
     assert len(rows) == len(list((REPO / "data/kitti_odometry_00/sequences/00/velodyne").glob("*.bin")))
     assert all(len(row) == 12 for row in rows)
     assert float(rows[-1][3]) > 1.0  # the car moved forward
+
+
+def test_slam2d_log(tmp_path):
+    pytest.importorskip("matplotlib")
+    r = run("slam2d_log.py", REPO / "data/radish_clf_raw/intel.clf.bz2", 300, tmp_path / "s.png", cwd=tmp_path)
+    assert (tmp_path / "s.png").stat().st_size > 1000 and (tmp_path / "s.pgm").is_file()
+    assert "300 scans" in r.stdout and "loop closures" in r.stdout
+
+
+def test_sequence_odometry(tmp_path):
+    r = run("sequence_odometry.py", REPO / "data/kitti_odometry_00", tmp_path / "m.pgm", cwd=tmp_path)
+    assert "kitti source: 6 scans" in r.stdout and "ATE rmse" in r.stdout
+    assert (tmp_path / "m.pgm").is_file() and (tmp_path / "m.yaml").is_file()

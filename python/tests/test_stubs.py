@@ -41,7 +41,13 @@ def doc_params(obj, name):
 
 def stub_params(fn):
     args = fn.args
-    return [a.arg for a in args.posonlyargs + args.args + args.kwonlyargs]
+    names = [a.arg for a in args.posonlyargs + args.args]
+    if args.vararg:
+        names.append("*" + args.vararg.arg)
+    names += [a.arg for a in args.kwonlyargs]
+    if args.kwarg:
+        names.append("**" + args.kwarg.arg)
+    return names
 
 
 def stub_defaults(fn):
@@ -83,7 +89,9 @@ def parse_stub():
         elif isinstance(node, ast.ClassDef):
             members = {}
             for item in node.body:
-                if isinstance(item, ast.FunctionDef):
+                if isinstance(item, ast.AnnAssign):  # `name: T`: a writable attribute
+                    members[item.target.id] = ("attribute", [])
+                elif isinstance(item, ast.FunctionDef):
                     decorators = {d.id for d in item.decorator_list if isinstance(d, ast.Name)}
                     kind = "property" if "property" in decorators else "static" if "staticmethod" in decorators else "method"
                     members[item.name] = (kind, stub_params(item))
@@ -120,7 +128,11 @@ def test_classes(name):
     if issubclass(cls, BaseException):
         assert [b.__name__ for b in cls.__bases__] == bases
         return
-    public = {k: v for k, v in vars(cls).items() if not k.startswith("_") or k in ("__init__", "__len__")}
+    public = {
+        k: v
+        for k, v in vars(cls).items()
+        if not k.startswith("_") or k in ("__init__", "__len__", "__getitem__")
+    }
     if not (public.get("__init__").__doc__ or "").startswith("__init__("):
         public.pop("__init__", None)  # pybind11's placeholder of a class without constructor
     assert set(public) == set(members), name
@@ -128,6 +140,9 @@ def test_classes(name):
         value = public[attr]
         if kind == "property":
             assert isinstance(value, property), f"{name}.{attr}"
+            continue
+        if kind == "attribute":  # read and written: a property with a setter
+            assert isinstance(value, property) and value.fset is not None, f"{name}.{attr}"
             continue
         if kind == "static":
             assert isinstance(value, staticmethod), f"{name}.{attr}"

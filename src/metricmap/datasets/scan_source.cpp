@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "metricmap/datasets/bag_source.h"
 #include "metricmap/datasets/carmen_source.h"
 #include "metricmap/datasets/folder_source.h"
 #include "metricmap/datasets/kitti_source.h"
@@ -42,6 +43,7 @@ std::string scanSourceKind(const std::string& path, const std::string& format) {
   std::error_code ec;
   if (!fs::exists(path, ec)) return std::string();
   const bool dir = fs::is_directory(path, ec);
+  if (format == "bag" || (format == "auto" && looksLikeBag(path))) return "bag";
   if (format == "kitti" || (format == "auto" && dir && looksLikeKittiRoot(path))) return "kitti";
   if (format == "carmen" || (format == "auto" && !dir && looksLikeLaserLog(path))) return "carmen";
   if (format == "folder" || (format == "auto" && (dir || endsWith(lower(path), ".txt"))))
@@ -52,13 +54,14 @@ std::string scanSourceKind(const std::string& path, const std::string& format) {
 std::unique_ptr<ScanSource> openScanSource(const std::string& path,
                                            const ScanSourceOptions& options) {
   const std::string& f = options.format;
-  if (f != "auto" && f != "kitti" && f != "folder" && f != "carmen") {
-    throw std::invalid_argument("source format must be auto, kitti, folder or carmen, got '" + f +
-                                "'");
+  if (f != "auto" && f != "kitti" && f != "folder" && f != "carmen" && f != "bag") {
+    throw std::invalid_argument("source format must be auto, kitti, folder, carmen or bag, got '" +
+                                f + "'");
   }
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path + ": no such file or folder");
   const bool dir = fs::is_directory(path, ec);
+  if (f == "bag" || (f == "auto" && looksLikeBag(path))) return openBagSource(path, options);
   if (f == "kitti" || (f == "auto" && dir && looksLikeKittiRoot(path))) {
     if (!dir) throw InputError(path + ": a KITTI root must be a folder");
     return openKittiSource(path, options);

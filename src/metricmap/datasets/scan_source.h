@@ -45,7 +45,7 @@ struct Scan {
 
 /// \brief What a source knows beyond its scans.
 struct SourceInfo {
-  /// \brief "kitti", "folder" or "carmen".
+  /// \brief "kitti", "folder", "carmen" or "bag".
   std::string kind;
   /// \brief The path the source was opened from.
   std::string path;
@@ -81,7 +81,7 @@ class ScanSource {
 
 /// \brief How to open a source.
 struct ScanSourceOptions {
-  /// \brief "auto" (from the path), "kitti", "folder" or "carmen".
+  /// \brief "auto" (from the path), "kitti", "folder", "carmen" or "bag".
   std::string format = "auto";
   /// \brief KITTI sequence under the root.
   std::string sequence = "00";
@@ -90,16 +90,22 @@ struct ScanSourceOptions {
   std::string reference_poses;
   /// \brief Stamps file (one number per line) overriding the one the source finds.
   std::string times;
+  /// \brief Bag topic to read (bag_source.h); empty: the bag's only topic of `bag_scans`.
+  std::string topic;
+  /// \brief Which bag topics are candidates when `topic` is empty: "any" (PointCloud2 and
+  /// LaserScan), "cloud" (PointCloud2: 3D odometry) or "laser" (LaserScan: 2D SLAM).
+  std::string bag_scans = "any";
 };
 
 /// \brief The kind of source openScanSource opens for `path` read as `format` ("auto",
-/// "kitti", "folder", "carmen"): "kitti", "folder" or "carmen", or "" when it would refuse the
+/// "kitti", "folder", "carmen", "bag"): one of those, or "" when it would refuse the
 /// path (missing, or none of these). Reads nothing but the file system's entries.
 std::string scanSourceKind(const std::string& path, const std::string& format);
 
 /// \brief Open the source at `path`: a KITTI odometry root (has sequences/), a folder of scans
 /// (.pcd .ply .bin .npy, one format), a list file (.txt of scan paths) or a CARMEN log
-/// (.clf/.log, optionally .gz/.bz2).
+/// (.clf/.log, optionally .gz/.bz2) or a ROS bag (.db3, .mcap, a rosbag2 folder with
+/// metadata.yaml: bag_source.h).
 /// \throws InputError naming the path when it is none of these or its files are inconsistent
 /// \throws std::invalid_argument for a bad option value
 std::unique_ptr<ScanSource> openScanSource(const std::string& path,

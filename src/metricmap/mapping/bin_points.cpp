@@ -1,11 +1,11 @@
-#include "bin_points_kernel.h"
+#include "metricmap/mapping/bin_points.h"
 
 #include <cmath>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
 
-namespace metricmap::python {
+namespace metricmap {
 
 namespace {
 
@@ -110,4 +110,4 @@ template void binPoints<float>(const float*, std::size_t, std::size_t, std::size
 template void binPoints<double>(const double*, std::size_t, std::size_t, std::size_t,
                                 const BinPointsParams&, double*, bool*);
 
-}  // namespace metricmap::python
+}  // namespace metricmap

@@ -1,5 +1,5 @@
 #pragma once
-/// \file bin_points_kernel.h
+/// \file bin_points.h
 /// \brief Active Neural SLAM's `bin_points` (env/utils/depth_utils.py) in C++: counts of points
 /// per (row = y bin, column = x bin, height bin), bit for bit what its numpy code computes.
 ///
@@ -7,14 +7,14 @@
 /// rounding in the input's precision, r cast to it; a value outside int32 becomes INT32_MIN, as
 /// numpy's cast on x86), Z_bin = np.digitize(z, z_bins) (NaN z: len(z_bins) for increasing
 /// edges, 0 for decreasing ones); valid iff 0 <= X_bin, Y_bin < map_size and x is not NaN.
-/// Kept here, in the Python module, because the library has no such function yet; it belongs
-/// beside mapping/height_map (whose cells are centred and floored instead).
+/// HeightMap (height_map.h) is the library's own top-down map: its cells are centred on the
+/// camera and floored; this is the course's drop-in function, used by metricmap.bin_points.
 
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-namespace metricmap::python {
+namespace metricmap {
 
 struct BinPointsParams {
   std::int64_t map_size = 0;   ///< > 0
@@ -33,4 +33,4 @@ template <typename T>
 void binPoints(const T* xyz, std::size_t frames, std::size_t pixels, std::size_t channels,
                const BinPointsParams& params, double* counts, bool* valid);
 
-}  // namespace metricmap::python
+}  // namespace metricmap

@@ -1,0 +1,149 @@
+#include "poses.h"
+
+#include <cmath>
+#include <string>
+
+#include "metricmap/exceptions.h"
+#include "metricmap/io/map_server.h"
+
+namespace metricmap::python {
+
+py::array_t<double> posesArray(const std::vector<Eigen::Isometry3d>& poses) {
+  py::array_t<double> a({py::ssize_t(poses.size()), py::ssize_t(4), py::ssize_t(4)});
+  double* d = a.mutable_data();
+  for (std::size_t k = 0; k < poses.size(); ++k)
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) d[16 * k + 4 * i + j] = poses[k].matrix()(i, j);
+  return a;
+}
+
+std::vector<Eigen::Isometry3d> posesFrom(const py::handle& obj, const char* name,
+                                         bool allow_empty) {
+  auto a = doublesFromArray(obj, name);
+  if (a.ndim() != 3 || a.shape(1) != 4 || a.shape(2) != 4)
+    throw py::value_error(std::string(name) + " must have shape (N, 4, 4)");
+  const std::size_t n = static_cast<std::size_t>(a.shape(0));
+  if (n == 0 && !allow_empty) throw py::value_error(std::string(name) + " is empty");
+  std::vector<Eigen::Isometry3d> out(n);
+  const double* d = a.data();
+  for (std::size_t k = 0; k < n; ++k) {
+    Eigen::Matrix4d m;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) m(i, j) = d[16 * k + 4 * i + j];
+    const std::string which = std::string(name) + "[" + std::to_string(k) + "]";
+    if (!m.allFinite()) throw py::value_error(which + " is not finite");
+    const Eigen::Matrix3d r = m.topLeftCorner<3, 3>();
+    const double orth = (r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+    if (orth > 1e-3 || std::abs(r.determinant() - 1.0) > 1e-3)
+      throw py::value_error(which + " is not a rigid transform (rotation not orthonormal)");
+    if ((m.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() > 1e-6)
+      throw py::value_error(which + ": the last row must be 0 0 0 1");
+    out[k].matrix() = m;
+  }
+  return out;
+}
+
+std::vector<double> stampsFrom(const py::handle& obj, const char* name, std::size_t n) {
+  auto a = doublesFromArray(obj, name);
+  if (a.ndim() != 1 || static_cast<std::size_t>(a.shape(0)) != n)
+    throw py::value_error(std::string(name) + " must have shape (" + std::to_string(n) +
+                          ",), one stamp per pose");
+  std::vector<double> out(a.data(), a.data() + n);
+  for (double s : out)
+    if (!std::isfinite(s)) throw py::value_error(std::string(name) + " must be finite");
+  return out;
+}
+
+py::array_t<double> doublesArray(const std::vector<double>& values) {
+  return arrayFrom(values, {py::ssize_t(values.size())});
+}
+
+py::array_t<double> poses2dArray(const std::vector<Pose2D>& poses) {
+  py::array_t<double> a({py::ssize_t(poses.size()), py::ssize_t(3)});
+  double* d = a.mutable_data();
+  for (std::size_t k = 0; k < poses.size(); ++k) {
+    d[3 * k] = poses[k].x;
+    d[3 * k + 1] = poses[k].y;
+    d[3 * k + 2] = poses[k].theta;
+  }
+  return a;
+}
+
+Pose2D pose2dFrom(const py::handle& obj, const char* name) {
+  auto a = doublesFromArray(obj, name);
+  if (a.ndim() == 2 && a.shape(0) == 4 && a.shape(1) == 4) {
+    const Eigen::Matrix4d m = matrix4From(obj, name);
+    Eigen::Isometry3d t;
+    t.matrix() = m;
+    return planar(t);
+  }
+  if (a.ndim() != 1 || a.shape(0) != 3)
+    throw py::value_error(std::string(name) + " must be (x, y, theta) or a (4, 4) transform");
+  const Pose2D p{a.data()[0], a.data()[1], a.data()[2]};
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.theta))
+    throw py::value_error(std::string(name) + " must be finite");
+  return p;
+}
+
+Pose2D planar(const Eigen::Isometry3d& t) {
+  return {t.translation().x(), t.translation().y(), std::atan2(t(1, 0), t(0, 0))};
+}
+
+Eigen::Isometry3d spatial(const Pose2D& p) {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.translation() << p.x, p.y, 0.0;
+  t.linear() = Eigen::Matrix3d(Eigen::AngleAxisd(p.theta, Eigen::Vector3d::UnitZ()));
+  return t;
+}
+
+std::vector<std::size_t> framesFrom(const py::object& obj, const char* name) {
+  std::vector<std::size_t> out;
+  if (obj.is_none()) return out;
+  py::array a = py::array::ensure(obj);
+  if (!a) throw py::type_error(std::string(name) + " must be a sequence of integers");
+  if (a.size() == 0) return out;
+  if (a.dtype().kind() != 'i' && a.dtype().kind() != 'u')
+    throw py::type_error(std::string(name) + " must hold integers");
+  if (a.ndim() != 1) throw py::value_error(std::string(name) + " must be 1-D");
+  auto v = py::array_t<long long, py::array::c_style | py::array::forcecast>(a);
+  for (py::ssize_t k = 0; k < v.size(); ++k) {
+    if (v.data()[k] < 0) throw py::value_error(std::string(name) + " must not be negative");
+    out.push_back(static_cast<std::size_t>(v.data()[k]));
+  }
+  return out;
+}
+
+py::dict mapServerDict(const MapServerImage& image) {
+  py::dict d;
+  py::array_t<std::uint8_t> a({py::ssize_t(image.height), py::ssize_t(image.width)});
+  if (!image.pixels.empty()) std::copy(image.pixels.begin(), image.pixels.end(), a.mutable_data());
+  d["image"] = a;
+  d["resolution"] = image.resolution;
+  d["origin"] = py::make_tuple(image.origin_x, image.origin_y);
+  d["mode"] = image.mode == MapServerMode::Scale     ? "scale"
+              : image.mode == MapServerMode::Trinary ? "trinary"
+                                                     : "unstated";
+  return d;
+}
+
+void writeMapImage(const std::string& path, const MapServerImage& image) {
+  if (path.size() < 4 || path.compare(path.size() - 4, 4, ".pgm") != 0)
+    throw py::value_error(path + ": a map_server map must be written to a .pgm path");
+  MapServerFiles files = mapServerFiles(path);
+  files.preview_png.clear();
+  files.heat_png.clear();
+  try {
+    py::gil_scoped_release release;
+    writeMapServer(image, files);
+  } catch (const std::invalid_argument&) {
+    throw;
+  } catch (const InputError&) {
+    throw;
+  } catch (const CapacityError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    raiseOSError(e);
+  }
+}
+
+}  // namespace metricmap::python

@@ -1,0 +1,410 @@
+// metricmap.Slam2D / Slam2DConfig / run_slam2d: the 2D laser SLAM (slam/slam_2d.h).
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "arrays.h"
+#include "metricmap/exceptions.h"
+#include "metricmap/slam/slam_2d.h"
+#include "posegraph.h"
+#include "poses.h"
+#include "sequence.h"
+
+namespace metricmap::python {
+
+namespace {
+
+struct PySlam {
+  std::unique_ptr<Slam2D> slam;
+  std::vector<double> stamps;
+  bool finished = false;
+  const Slam2D& finishedSlam() const {
+    if (!finished) throw py::value_error("the map is built by finish(): call it first");
+    return *slam;
+  }
+};
+
+std::vector<double> vectorFrom(const py::handle& obj, const char* name) {
+  auto a = doublesFromArray(obj, name);
+  if (a.ndim() != 1) throw py::value_error(std::string(name) + " must be 1-D, shape (B,)");
+  return {a.data(), a.data() + a.size()};
+}
+
+py::dict mapDict(const LogOddsGrid2D& g) {
+  py::dict d;
+  py::array_t<float> a({py::ssize_t(g.height()), py::ssize_t(g.width())});
+  if (g.width() * g.height() > 0)
+    std::copy(g.data(), g.data() + g.width() * g.height(), a.mutable_data());
+  d["log_odds"] = a;
+  d["min_i"] = g.minI();
+  d["min_j"] = g.minJ();
+  d["resolution"] = g.params().resolution;
+  d["occupied_cells"] = g.occupiedCells();
+  d["known_cells"] = g.knownCells();
+  return d;
+}
+
+/// Planar poses beyond this (m) are refused: no map reaches that far (LogOddsGrid2D keeps
+/// +-2^30 cells), and the SLAM's cell arithmetic on such values would overflow.
+constexpr double kMaxPlanarCoordinate = 1e9;
+
+Pose2D boundedPose(const py::handle& obj, const char* name) {
+  const Pose2D p = pose2dFrom(obj, name);
+  if (std::abs(p.x) > kMaxPlanarCoordinate || std::abs(p.y) > kMaxPlanarCoordinate ||
+      std::abs(p.theta) > kMaxPlanarCoordinate)
+    throw py::value_error(std::string(name) + ": a coordinate beyond 1e9 m (or rad)");
+  return p;
+}
+
+std::unique_ptr<PySlam> makeSlam(const std::optional<Slam2DConfig>& config,
+                                 const Pose2D& sensor_to_base) {
+  auto p = std::make_unique<PySlam>();
+  p->slam = std::make_unique<Slam2D>(config ? *config : Slam2DConfig{}, sensor_to_base);
+  return p;
+}
+
+template <typename T>
+void field(py::class_<Slam2DConfig>& c, const char* name, T Slam2DConfig::*member,
+           const char* doc) {
+  c.def_readwrite(name, member, doc);
+}
+
+template <typename T>
+void mapField(py::class_<Slam2DConfig>& c, const char* name, T LogOddsParams::*member,
+              const char* doc) {
+  c.def_property(
+      name, [member](const Slam2DConfig& s) { return s.map.*member; },
+      [member](Slam2DConfig& s, T v) { s.map.*member = v; }, doc);
+}
+
+}  // namespace
+
+void initSlam(py::module_& m) {
+  py::class_<Slam2DConfig> c(m, "Slam2DConfig", R"doc(
+Parameters of :class:`Slam2D` (slam/slam_2d_config.h), one attribute each, with Cartographer's
+2D defaults; ``Slam2DConfig(max_range=20.0, ...)`` sets attributes by name. Values are checked
+when a :class:`Slam2D` is made (ValueError naming the first bad one). The final map's
+parameters are the ``map_*`` attributes.
+)doc");
+  c.def(py::init([](py::kwargs kwargs) {
+          Slam2DConfig config;
+          py::object view = py::cast(&config, py::return_value_policy::reference);
+          for (auto item : kwargs) {
+            const std::string key = py::str(item.first);
+            if (key.rfind('_', 0) == 0 || !py::hasattr(view, key.c_str()))
+              throw py::type_error("Slam2DConfig has no parameter '" + key + "'");
+            view.attr(key.c_str()) = item.second;
+          }
+          return config;
+        }),
+        "Slam2DConfig(**kwargs): the defaults, with the named attributes set.");
+  field(c, "min_range", &Slam2DConfig::min_range, "m: shorter beams are dropped (>= 0).");
+  field(c, "max_range", &Slam2DConfig::max_range, "m: longer beams are dropped.");
+  field(c, "voxel_filter", &Slam2DConfig::voxel_filter, "m: matching keeps one point per square.");
+  field(c, "resolution", &Slam2DConfig::resolution, "m: cell of the submaps.");
+  field(c, "scans_per_submap", &Slam2DConfig::scans_per_submap, "nodes a submap receives.");
+  field(c, "prob_hit", &Slam2DConfig::prob_hit, "submap sensor model: P(occupied | hit).");
+  field(c, "prob_miss", &Slam2DConfig::prob_miss, "submap sensor model: P(occupied | miss).");
+  field(c, "node_min_distance", &Slam2DConfig::node_min_distance, "m moved before a new node.");
+  field(c, "node_min_angle_deg", &Slam2DConfig::node_min_angle_deg, "deg turned before a node.");
+  field(c, "node_max_time", &Slam2DConfig::node_max_time, "s before a new node.");
+  field(c, "local_linear_window", &Slam2DConfig::local_linear_window,
+        "m: local correlative search half-width.");
+  field(c, "local_angular_window_deg", &Slam2DConfig::local_angular_window_deg,
+        "deg: local correlative search half-width.");
+  field(c, "translation_weight", &Slam2DConfig::translation_weight, "Gauss-Newton prior.");
+  field(c, "rotation_weight", &Slam2DConfig::rotation_weight, "Gauss-Newton prior.");
+  field(c, "refine_iterations", &Slam2DConfig::refine_iterations, "Gauss-Newton steps.");
+  field(c, "loop_linear_window", &Slam2DConfig::loop_linear_window, "m: loop search half-width.");
+  field(c, "loop_angular_window_deg", &Slam2DConfig::loop_angular_window_deg,
+        "deg: loop search half-width.");
+  field(c, "loop_min_score", &Slam2DConfig::loop_min_score, "score a loop match must reach.");
+  field(c, "loop_max_distance", &Slam2DConfig::loop_max_distance, "m: farther submaps skipped.");
+  field(c, "wide_min_node_gap", &Slam2DConfig::wide_min_node_gap, "nodes (wide search).");
+  field(c, "wide_every_n_nodes", &Slam2DConfig::wide_every_n_nodes, "nodes (wide search).");
+  field(c, "wide_idle_nodes", &Slam2DConfig::wide_idle_nodes, "nodes (wide search).");
+  field(c, "wide_linear_window", &Slam2DConfig::wide_linear_window, "m (wide search).");
+  field(c, "wide_angular_window_deg", &Slam2DConfig::wide_angular_window_deg, "deg (wide).");
+  field(c, "loop_every_n_nodes", &Slam2DConfig::loop_every_n_nodes, "one node searched in n.");
+  field(c, "loop_min_node_gap", &Slam2DConfig::loop_min_node_gap, "nodes.");
+  field(c, "loop_min_overlap", &Slam2DConfig::loop_min_overlap, "share of points, [0, 1].");
+  field(c, "loop_max_chi2", &Slam2DConfig::loop_max_chi2, "loop edges beyond are removed.");
+  field(c, "loop_max_submaps", &Slam2DConfig::loop_max_submaps, "submaps per near search.");
+  field(c, "loop_search_points", &Slam2DConfig::loop_search_points, "points scored.");
+  field(c, "branch_and_bound_depth", &Slam2DConfig::branch_and_bound_depth, "levels (1..16).");
+  field(c, "edge_translation_sigma", &Slam2DConfig::edge_translation_sigma, "m.");
+  field(c, "edge_rotation_sigma_deg", &Slam2DConfig::edge_rotation_sigma_deg, "deg.");
+  field(c, "loop_translation_sigma", &Slam2DConfig::loop_translation_sigma, "m.");
+  field(c, "loop_rotation_sigma_deg", &Slam2DConfig::loop_rotation_sigma_deg, "deg.");
+  field(c, "optimize_every_n_nodes", &Slam2DConfig::optimize_every_n_nodes, "nodes.");
+  field(c, "optimize_iterations", &Slam2DConfig::optimize_iterations, "LM steps while running.");
+  field(c, "final_iterations", &Slam2DConfig::final_iterations, "LM steps at the end.");
+  mapField(c, "map_resolution", &LogOddsParams::resolution, "m: cell of the final map.");
+  mapField(c, "map_prob_hit", &LogOddsParams::prob_hit, "final map's sensor model.");
+  mapField(c, "map_prob_miss", &LogOddsParams::prob_miss, "final map's sensor model.");
+  mapField(c, "map_clamp_min", &LogOddsParams::clamp_min, "final map's clamping (probability).");
+  mapField(c, "map_clamp_max", &LogOddsParams::clamp_max, "final map's clamping (probability).");
+  mapField(c, "map_occupancy_threshold", &LogOddsParams::occupancy_threshold,
+           "final map: occupied at or above this probability.");
+  mapField(c, "map_max_range", &LogOddsParams::max_range, "m: final map's beams are cut here.");
+  c.def(
+      "validate", [](const Slam2DConfig& s) { validateSlam2DConfig(s); },
+      "Raise ValueError naming the first value out of its range.");
+
+  py::class_<PySlam>(m, "Slam2D", R"doc(
+2D laser SLAM with submaps and loop closure (Hess et al. 2016, Cartographer's method):
+``add_scan`` each scan with its raw odometry, ``finish()``, then read ``trajectory``,
+``loops``, ``graph`` and the map. Poses are the robot's (base) in a world that starts at the
+first odometry pose (x, y in m, theta in rad).
+)doc")
+      .def(py::init([](std::optional<Slam2DConfig> config, ArrayLike sensor_to_base) {
+             return makeSlam(config, boundedPose(sensor_to_base, "sensor_to_base"));
+           }),
+           py::arg("config") = py::none(),
+           py::arg("sensor_to_base") = py::make_tuple(0.0, 0.0, 0.0), R"doc(
+Parameters
+----------
+config : Slam2DConfig, optional
+    Default: ``Slam2DConfig()``.
+sensor_to_base : array_like
+    The laser on the robot: (x, y, theta) in m and rad, or a (4, 4) transform.
+
+Raises
+------
+ValueError
+    a configuration value out of its range.
+)doc")
+      .def(
+          "add_scan",
+          [](PySlam& p, ArrayLike ranges, ArrayLike angles, std::optional<ArrayLike> odometry,
+             std::optional<double> stamp) {
+            if (p.finished) throw py::value_error("add_scan after finish()");
+            LaserScan scan;
+            scan.ranges = vectorFrom(ranges, "ranges");
+            scan.angles = vectorFrom(angles, "angles");
+            if (scan.ranges.size() != scan.angles.size())
+              throw py::value_error("ranges and angles must have the same length");
+            for (double a : scan.angles)
+              if (!std::isfinite(a)) throw py::value_error("angles must be finite");
+            std::optional<Pose2D> odo;
+            if (odometry) odo = boundedPose(*odometry, "odometry");
+            const double t = stamp ? *stamp : std::numeric_limits<double>::quiet_NaN();
+            {
+              py::gil_scoped_release release;
+              p.slam->addScan(scan, odo, t);
+            }
+            p.stamps.push_back(t);
+          },
+          py::arg("ranges"), py::arg("angles"), py::arg("odometry") = py::none(),
+          py::arg("stamp") = py::none(), R"doc(
+Add the next scan.
+
+Parameters
+----------
+ranges : array_like, shape (B,)
+    Metres; NaN: no return (the beam is skipped).
+angles : array_like, shape (B,)
+    Radians, counter-clockwise, x forward (e.g. from :func:`read_scan_log` or
+    ``Scan.laser``).
+odometry : array_like, optional
+    The robot's raw odometry (base -> odometry world): (x, y, theta) or (4, 4); coordinates
+    beyond 1e9 m are refused.
+stamp : float, optional
+    Seconds (the motion filter's time limit applies only with stamps).
+
+Raises
+------
+ValueError
+    lengths differ, non-finite odometry or angles, or after finish().
+CapacityError
+    the maps outgrow the memory budget.
+)doc")
+      .def(
+          "finish",
+          [](PySlam& p) {
+            if (p.finished) return;
+            {
+              py::gil_scoped_release release;
+              p.slam->finish();
+            }
+            p.finished = true;
+          },
+          "Optimise the graph once more and build the map; further add_scan calls are refused.")
+      .def_property_readonly(
+          "trajectory", [](const PySlam& p) { return poses2dArray(p.slam->trajectory()); },
+          "(N, 3) float64: x (m), y (m), theta (rad) of the robot at every scan added "
+          "(after finish: optimised).")
+      .def_property_readonly(
+          "stamps", [](const PySlam& p) { return doublesArray(p.stamps); },
+          "(N,) float64: the stamps given to add_scan (NaN where none), in the order added.")
+      .def_property_readonly(
+          "node_scans",
+          [](const PySlam& p) {
+            std::vector<long long> v(p.slam->nodeScans().begin(), p.slam->nodeScans().end());
+            return arrayFrom(v, {py::ssize_t(v.size())});
+          },
+          "(K,) int64: the scan index of every node (graph vertex).")
+      .def_property_readonly(
+          "loops",
+          [](const PySlam& p) {
+            py::list out;
+            for (const LoopClosure2D& l : p.slam->loops()) {
+              py::dict d;
+              d["node"] = l.node;
+              d["submap"] = l.submap;
+              d["anchor"] = l.anchor;
+              d["score"] = l.score;
+              d["edge"] = l.edge;
+              out.append(d);
+            }
+            return out;
+          },
+          "list of dict: the loop closures kept (node, submap, anchor node, score, edge).")
+      .def_property_readonly(
+          "graph",
+          [](const PySlam& p) {
+            PyPoseGraph g;
+            g.dimension = 2;
+            g.graph2d = p.slam->graph();
+            return g;
+          },
+          "PoseGraph: a copy of the pose graph (one vertex per node).")
+      .def_property_readonly(
+          "stats",
+          [](const PySlam& p) {
+            const Slam2DStats& s = p.slam->stats();
+            py::dict d;
+            d["scans"] = s.scans;
+            d["nodes"] = s.nodes;
+            d["submaps"] = s.submaps;
+            d["finished_submaps"] = s.finished_submaps;
+            d["loop_searches"] = s.loop_searches;
+            d["loop_candidates"] = s.loop_candidates;
+            d["loops_found"] = s.loops_found;
+            d["loops_rejected"] = s.loops_rejected;
+            d["optimizations"] = s.optimizations;
+            d["local_seconds"] = s.local_seconds;
+            d["insert_seconds"] = s.insert_seconds;
+            d["loop_seconds"] = s.loop_seconds;
+            d["optimize_seconds"] = s.optimize_seconds;
+            d["map_seconds"] = s.map_seconds;
+            d["final_chi2_initial"] = s.final_chi2_initial;
+            d["final_chi2"] = s.final_chi2;
+            d["final_iterations"] = s.final_iterations;
+            return d;
+          },
+          "dict: counts and seconds per phase (Slam2DStats).")
+      .def_property_readonly(
+          "config", [](const PySlam& p) { return p.slam->config(); },
+          "Slam2DConfig: a copy of the configuration in use.")
+      .def(
+          "map", [](const PySlam& p) { return mapDict(p.finishedSlam().map()); },
+          R"doc(
+The final map (after finish): dict with log_odds (H, W) float32 (row r, column c is the cell
+(min_i + c, min_j + r) of `resolution` m, spanning [i r, (i+1) r) x [j r, (j+1) r); NaN
+unknown), min_i, min_j, resolution, occupied_cells, known_cells.
+)doc")
+      .def(
+          "map_image",
+          [](const PySlam& p, const std::string& kind) {
+            const LogOddsGrid2D& g = p.finishedSlam().map();
+            if (kind == "trinary") return mapServerDict(g.trinaryImage());
+            if (kind == "probability") return mapServerDict(g.probabilityImage());
+            throw py::value_error("kind must be 'trinary' or 'probability', got '" + kind + "'");
+          },
+          py::arg("kind") = "trinary", R"doc(
+The map as map_server sees it: dict with image (H, W) uint8 (row 0 at the top; trinary:
+occupied 0, free 254, unknown 205; probability: 255 (1 - p)), resolution, origin (x, y of the
+lower-left corner, m), mode.
+)doc")
+      .def(
+          "write_map",
+          [](const PySlam& p, const std::filesystem::path& path, const std::string& kind) {
+            const LogOddsGrid2D& g = p.finishedSlam().map();
+            if (kind != "trinary" && kind != "probability")
+              throw py::value_error("kind must be 'trinary' or 'probability', got '" + kind + "'");
+            writeMapImage(path.string(),
+                          kind == "trinary" ? g.trinaryImage() : g.probabilityImage());
+          },
+          py::arg("path"), py::arg("kind") = "trinary",
+          "Write the map as map_server files: `path` (.pgm) and the .yaml beside it (what "
+          "`metricmap slam2d --out-map` writes for 'trinary').");
+
+  m.def(
+      "run_slam2d",
+      [](py::object source, py::object frames, std::optional<Slam2DConfig> config,
+         bool loop_closure) {
+        py::object holder;
+        PySource& s = sourceFrom(source, holder);
+        const SourceInfo& info = s.source->info();
+        if (!info.planar)
+          throw InputError(info.path + ": slam2d needs 2D laser scans (a CARMEN log); this is a " +
+                           info.kind + " source of 3D scans");
+        std::vector<std::size_t> f = framesFrom(frames, "frames");
+        if (f.empty())
+          for (std::size_t k = 0; k < s.source->size(); ++k) f.push_back(k);
+        for (std::size_t k = 0; k < f.size(); ++k) {
+          if (f[k] >= s.source->size())
+            throw py::value_error("frame " + std::to_string(f[k]) + " is out of range (" +
+                                  std::to_string(s.source->size()) + " scans)");
+          if (k > 0 && f[k] <= f[k - 1])
+            throw py::value_error("frames must be strictly increasing");
+        }
+        Slam2DConfig c = config ? *config : Slam2DConfig{};
+        if (!loop_closure)
+          c.loop_every_n_nodes = c.wide_every_n_nodes = static_cast<std::size_t>(-1);
+        std::unique_ptr<PySlam> p = makeSlam(c, planar(info.sensor_to_base));
+        {
+          py::gil_scoped_release release;
+          std::lock_guard<std::mutex> lock(s.mutex);
+          for (std::size_t k : f) {
+            Scan scan = s.source->scan(k);
+            if (!scan.laser) throw InputError(scan.name + ": not a 2D laser scan");
+            std::optional<Pose2D> odometry;
+            if (scan.odometry) odometry = planar(*scan.odometry);
+            try {
+              p->slam->addScan(*scan.laser, odometry, scan.stamp);
+            } catch (const CapacityError& e) {
+              throw CapacityError(scan.name + ": " + e.what());
+            }
+            p->stamps.push_back(scan.stamp);
+          }
+          p->slam->finish();
+          p->finished = true;
+        }
+        return p;
+      },
+      py::arg("source"), py::arg("frames") = py::none(), py::arg("config") = py::none(),
+      py::arg("loop_closure") = true, R"doc(
+Run :class:`Slam2D` over a planar source (a CARMEN log), as `metricmap slam2d` does: the
+source's laser offset as sensor_to_base, each scan's beams, raw odometry and stamp.
+
+Parameters
+----------
+source : ScanSource or str or os.PathLike
+frames : sequence of int, optional
+    Strictly increasing scan indices (default: all).
+config : Slam2DConfig, optional
+loop_closure : bool
+    False: local SLAM only (`--no-loop-closure`).
+
+Returns
+-------
+Slam2D
+    finished.
+
+Raises
+------
+InputError
+    not a planar source, or a scan that cannot be read.
+)doc");
+}
+
+}  // namespace metricmap::python

@@ -1,0 +1,246 @@
+#include "metricmap/io/point_cloud2.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "metricmap/common/format_number.h"
+#include "metricmap/common/memory_budget.h"
+
+namespace metricmap {
+namespace {
+
+constexpr double kMaxSweepSeconds = 10.0;
+
+struct Field {
+  std::string name;
+  std::uint32_t offset = 0, count = 0;
+  std::uint8_t datatype = 0;
+};
+
+std::size_t typeSize(std::uint8_t datatype) {
+  switch (datatype) {
+    case 1:  // INT8
+    case 2:  // UINT8
+      return 1;
+    case 3:  // INT16
+    case 4:  // UINT16
+      return 2;
+    case 5:  // INT32
+    case 6:  // UINT32
+    case 7:  // FLOAT32
+      return 4;
+    case 8:  // FLOAT64
+      return 8;
+    default:
+      return 0;
+  }
+}
+
+// One value as double, from `size` bytes in the cloud's byte order.
+double value(const std::uint8_t* at, std::uint8_t datatype, bool swap) {
+  std::uint8_t b[8];
+  const std::size_t n = typeSize(datatype);
+  if (swap) {
+    for (std::size_t k = 0; k < n; ++k) b[k] = at[n - 1 - k];
+  } else {
+    std::memcpy(b, at, n);
+  }
+  switch (datatype) {
+    case 1:
+      return static_cast<std::int8_t>(b[0]);
+    case 2:
+      return b[0];
+    case 3: {
+      std::int16_t v;
+      std::memcpy(&v, b, 2);
+      return v;
+    }
+    case 4: {
+      std::uint16_t v;
+      std::memcpy(&v, b, 2);
+      return v;
+    }
+    case 5: {
+      std::int32_t v;
+      std::memcpy(&v, b, 4);
+      return v;
+    }
+    case 6: {
+      std::uint32_t v;
+      std::memcpy(&v, b, 4);
+      return v;
+    }
+    case 7: {
+      float v;
+      std::memcpy(&v, b, 4);
+      return v;
+    }
+    default: {
+      double v;
+      std::memcpy(&v, b, 8);
+      return v;
+    }
+  }
+}
+
+bool hostBigEndian() {
+  const std::uint16_t one = 1;
+  std::uint8_t b;
+  std::memcpy(&b, &one, 1);
+  return b == 0;
+}
+
+const Field* find(const std::vector<Field>& fields, const char* name) {
+  for (const Field& f : fields)
+    if (f.name == name) return &f;
+  return nullptr;
+}
+
+}  // namespace
+
+CloudMessage decodePointCloud2(const std::uint8_t* data, std::size_t size,
+                               MessageReader::Encoding encoding, const std::string& what) {
+  MessageReader r(data, size, encoding, what);
+  CloudMessage out;
+  out.stamp = r.header();
+  out.height = r.u32();
+  out.width = r.u32();
+  // A PointField is at least 13 bytes serialised (name length, offset, datatype, count).
+  const std::uint32_t nfields = r.sequenceLength(13);
+  std::vector<Field> fields(nfields);
+  for (Field& f : fields) {
+    f.name = r.string();
+    f.offset = r.u32();
+    f.datatype = r.u8();
+    f.count = r.u32();
+  }
+  const bool big = r.boolean();
+  const std::uint32_t point_step = r.u32();
+  const std::uint32_t row_step = r.u32();
+  const std::uint32_t data_size = r.sequenceLength(1);
+  const std::uint8_t* bytes = r.bytes(data_size);
+  (void)r.boolean();  // is_dense: NaN points are dropped whatever it says
+  // The layout: every field inside point_step, no two overlapping (checked in offset order).
+  std::vector<std::pair<std::uint64_t, std::size_t>> spans;  // (offset, field)
+  spans.reserve(fields.size());
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    const Field& f = fields[i];
+    const std::size_t s = typeSize(f.datatype);
+    if (s == 0) r.fail("field '" + f.name + "' has unknown datatype " + std::to_string(f.datatype));
+    if (f.count == 0) r.fail("field '" + f.name + "' has count 0");
+    const std::uint64_t end = std::uint64_t(f.offset) + std::uint64_t(s) * f.count;
+    if (end > point_step)
+      r.fail("field '" + f.name + "' (offset " + std::to_string(f.offset) + ", " +
+             std::to_string(end - f.offset) + " bytes) reaches beyond point_step " +
+             std::to_string(point_step));
+    spans.emplace_back(f.offset, i);
+  }
+  std::sort(spans.begin(), spans.end());
+  for (std::size_t k = 1; k < spans.size(); ++k) {
+    const Field& g = fields[spans[k - 1].second];
+    const Field& f = fields[spans[k].second];
+    if (f.offset < std::uint64_t(g.offset) + std::uint64_t(typeSize(g.datatype)) * g.count)
+      r.fail("fields '" + g.name + "' and '" + f.name + "' overlap");
+  }
+  const std::uint64_t n = std::uint64_t(out.width) * out.height;
+  if (std::uint64_t(out.width) * point_step > row_step)
+    r.fail("row_step " + std::to_string(row_step) + " is less than width " +
+           std::to_string(out.width) + " x point_step " + std::to_string(point_step));
+  if (std::uint64_t(row_step) * out.height != data_size)
+    r.fail("data holds " + std::to_string(data_size) + " bytes, not row_step " +
+           std::to_string(row_step) + " x height " + std::to_string(out.height));
+  const Field* x = find(fields, "x");
+  const Field* y = find(fields, "y");
+  const Field* z = find(fields, "z");
+  if (!x || !y || !z) r.fail("no x, y and z fields");
+  const Field* intensity = find(fields, "intensity");
+  const Field* time = nullptr;
+  for (const char* name : kPointTimeFields)
+    if ((time = find(fields, name))) break;
+  double time_scale = 0.0;
+  if (time) {
+    time_scale = time->datatype == 7 || time->datatype == 8 ? 1.0 : 1e-9;
+    if (typeSize(time->datatype) < 4)
+      r.fail("time field '" + time->name + "' is not float32/float64 (s) or a 32-bit integer (ns)");
+    out.cloud.time_field = time->name;
+  }
+  // Points are charged to the budget: 12 bytes each, plus intensity and time.
+  checkMemory(
+      n, 12 + (intensity ? 4 : 0) + (time ? 8 : 0),
+      what + ": " + std::to_string(out.width) + " x " + std::to_string(out.height) + " points");
+  ScanFile& c = out.cloud;
+  c.points.reserve(n);
+  if (intensity) c.intensity.reserve(n);
+  if (time) c.point_times.reserve(n);
+  const bool swap = big != hostBigEndian();
+  for (std::uint32_t row = 0; row < out.height; ++row) {
+    for (std::uint32_t col = 0; col < out.width; ++col) {
+      const std::uint8_t* p = bytes + std::size_t(row) * row_step + std::size_t(col) * point_step;
+      pcl::PointXYZ q;
+      q.x = static_cast<float>(value(p + x->offset, x->datatype, swap));
+      q.y = static_cast<float>(value(p + y->offset, y->datatype, swap));
+      q.z = static_cast<float>(value(p + z->offset, z->datatype, swap));
+      if (!(std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z))) {
+        ++c.nonfinite_dropped;
+        continue;
+      }
+      c.points.push_back(q);
+      if (intensity)
+        c.intensity.push_back(
+            static_cast<float>(value(p + intensity->offset, intensity->datatype, swap)));
+      if (time) c.point_times.push_back(value(p + time->offset, time->datatype, swap) * time_scale);
+    }
+  }
+  c.points.width = static_cast<std::uint32_t>(c.points.size());
+  c.points.height = 1;
+  c.points.is_dense = true;
+  if (time && !c.point_times.empty()) {
+    double lo = c.point_times.front(), hi = lo;
+    for (double t : c.point_times) {
+      if (!std::isfinite(t)) r.fail("time field '" + time->name + "' has a non-finite value");
+      lo = std::min(lo, t);
+      hi = std::max(hi, t);
+    }
+    if (hi - lo > kMaxSweepSeconds)
+      r.fail("time field '" + time->name + "' spans " + formatNumber(hi - lo) +
+             " s, more than one sweep (at most 10 s; integer fields are read as ns)");
+    for (double& t : c.point_times) t -= lo;
+  }
+  return out;
+}
+
+LaserMessage decodeLaserScan(const std::uint8_t* data, std::size_t size,
+                             MessageReader::Encoding encoding, const std::string& what) {
+  MessageReader r(data, size, encoding, what);
+  LaserMessage out;
+  out.stamp = r.header();
+  const float angle_min = r.f32();
+  (void)r.f32();  // angle_max
+  const float angle_increment = r.f32();
+  (void)r.f32();  // time_increment
+  (void)r.f32();  // scan_time
+  const float range_min = r.f32();
+  const float range_max = r.f32();
+  const std::uint32_t n = r.sequenceLength(4);
+  if (!std::isfinite(angle_min) || !std::isfinite(angle_increment))
+    r.fail("angle_min or angle_increment is not finite");
+  out.scan.angles.resize(n);
+  out.scan.ranges.resize(n);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const float v = r.f32();
+    out.scan.angles[k] = double(angle_min) + double(k) * double(angle_increment);
+    const bool valid = std::isfinite(v) && v > 0.0f && !(v < range_min) && !(v > range_max) &&
+                       double(v) <= kMaxLaserRange;
+    out.scan.ranges[k] = valid ? double(v) : std::numeric_limits<double>::quiet_NaN();
+  }
+  const std::uint32_t ni = r.sequenceLength(4);
+  if (ni != 0 && ni != n)
+    r.fail(std::to_string(ni) + " intensities for " + std::to_string(n) + " ranges");
+  out.intensity.resize(ni);
+  for (float& v : out.intensity) v = r.f32();
+  return out;
+}
+
+}  // namespace metricmap
