@@ -22,6 +22,7 @@
 #include "metricmap/common/parse_number.h"
 #include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/exceptions.h"
+#include "metricmap/io/bag_reader.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/input_file.h"
@@ -46,7 +47,7 @@ struct OccupancyOptions {
   std::vector<std::string> inputs;
   std::string sequence = "00", frames, world = "velodyne";
   std::string out_bt, out_ot, out_cloud, out_map, map_preview, band, format = "table";
-  std::string pcd_format = "binary";
+  std::string pcd_format = "binary", topic, reference;
   double resolution = kUnset, max_range = kUnset;
   unsigned threads = 1;
   bool threads_given = false;
@@ -64,13 +65,13 @@ bool isDirectory(const std::string& path) {
 }
 
 /// A scan source other than a KITTI root: a folder of scans (with poses.txt), a .txt list, a
-/// CARMEN log. Its scans are cast at the source's reference poses.
+/// CARMEN log, a ROS bag. Its scans are cast at the source's reference poses (--reference).
 bool isScanSource(const std::vector<std::string>& inputs) {
   if (inputs.size() != 1 || isDirectory(inputs[0])) return false;
   std::error_code ec;
   const std::string& p = inputs[0];
   return std::filesystem::is_directory(p, ec) || endsWith(p, ".txt") || endsWith(p, ".clf") ||
-         endsWith(p, ".log") || endsWith(p, ".gz") || endsWith(p, ".bz2");
+         endsWith(p, ".log") || endsWith(p, ".gz") || endsWith(p, ".bz2") || looksLikeBag(p);
 }
 
 /// "zmin,zmax" -> two finite numbers, zmin <= zmax (the checked parser: no hex, inf, nan).
@@ -138,6 +139,8 @@ void castScans(const OccupancyOptions& o, const Ranks& ranks, LogOddsMap& map, T
     SourceOptions so;
     so.path = o.inputs[0];
     so.frames = o.frames;
+    so.topic = o.topic;
+    so.reference = o.reference;
     const std::unique_ptr<ScanSource> source = openSource(so);
     const std::vector<std::size_t> frames = selectedFrames(so, *source);
     const std::vector<Eigen::Isometry3d> poses = referenceSensorPoses(*source, frames);
@@ -194,6 +197,16 @@ void refuseIgnoredOptions(const OccupancyOptions& o, bool from_file, bool kitti,
                        "its VIEWPOINT)");
     }
   }
+  for (const auto& [option, value] :
+       {std::pair<const char*, const std::string*>{"--topic", &o.topic},
+        {"--reference", &o.reference}}) {
+    if (!value->empty() && !source)
+      throw UsageError(std::string(option) +
+                       " applies to a scan source (a folder, a list, a log or a bag), not to " +
+                       (from_file ? "a map"
+                        : kitti   ? "a KITTI root"
+                                  : "PCD files"));
+  }
   if (!o.band.empty() && o.out_map.empty())
     throw UsageError("--band is the height band of --out-map: give --out-map too");
   if (o.pcd_format_given && o.out_cloud.empty())
@@ -216,6 +229,7 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
   std::pair<double, double> band{0, 0};
   if (!o.band.empty()) band = parseBand(o.band);
   RolePaths inputs = withRole("input", o.inputs);
+  if (!o.reference.empty()) inputs.push_back({"--reference", o.reference});
   requireDistinctInputs(inputs);
   if (!from_file && o.inputs.size() == 1 && isDirectory(o.inputs[0]) && !o.frames.empty()) {
     inputs = kittiInputs(o.inputs[0], o.sequence, parseFramesOption(o.frames), true);
@@ -345,6 +359,9 @@ void addOccupancyCommand(CLI::App& app) {
       ->check(countIn(0, 1024))
       ->capture_default_str();
   sub->add_option("--sequence", o->sequence, "KITTI sequence")->capture_default_str();
+  sub->add_option("--topic", o->topic, "Bag topic (a scan source that is a ROS bag)");
+  sub->add_option("--reference", o->reference,
+                  "Poses of the source's scans (KITTI or TUM rows; a bag has none of its own)");
   sub->add_option("--frames", o->frames, "KITTI or scan source frames, e.g. 0-5,15");
   sub->add_option("--world", o->world, "KITTI world: velodyne (z up) or camera (y down)")
       ->check(CLI::IsMember({"camera", "velodyne"}))

@@ -63,6 +63,28 @@ for x, y in zip(a, b):
 assert np.linalg.norm(b[2][:3, 3]) > 0.5"
 "$MM" map "$BAGS/kitti3_zstd.mcap" --poses odometry --profile kitti --out-cloud "$tmp/map.pcd" >/dev/null
 check "map on the bag writes its cloud" test -s "$tmp/map.pcd"
+# occupancy on the bag at the KITTI reference poses (velodyne frame: Tr^-1 P Tr, full precision):
+# the same .bt, byte for byte, as occupancy on the KITTI layout in the velodyne world.
+$PY - "$DATA/kitti_odometry_00" "$tmp/velo.txt" <<'PYEOF'
+import sys, numpy as np
+root, out = sys.argv[1], sys.argv[2]
+tr = [l for l in open(root + '/sequences/00/calib.txt') if l.startswith('Tr:')][0].split()[1:]
+Tr = np.eye(4); Tr[:3, :] = np.array(tr, float).reshape(3, 4)
+with open(out, 'w') as f:
+    for r in np.loadtxt(root + '/poses/00.txt')[:3]:
+        P = np.eye(4); P[:3, :] = r.reshape(3, 4)
+        f.write(' '.join(repr(v) for v in (np.linalg.inv(Tr) @ P @ Tr)[:3, :].ravel()) + '\n')
+PYEOF
+"$MM" occupancy "$BAGS/kitti3_zstd.mcap" --reference "$tmp/velo.txt" --resolution 0.2 \
+  --max-range 50 --out "$tmp/bag.bt" >/dev/null
+"$MM" occupancy "$DATA/kitti_odometry_00" --frames 0-2 --world velodyne --resolution 0.2 \
+  --max-range 50 --out "$tmp/kitti.bt" >/dev/null
+check "occupancy from the bag equals occupancy from the KITTI layout" cmp "$tmp/bag.bt" "$tmp/kitti.bt"
+expect 1 "no reference poses" -- "$MM" occupancy "$BAGS/kitti3_zstd.mcap" --resolution 0.2 \
+  --max-range 50 --out "$tmp/never.bt"
+expect 2 "--topic applies to a scan source" -- "$MM" occupancy "$DATA/kitti_odometry_00" \
+  --frames 0 --topic /points --resolution 0.2 --max-range 50 --out "$tmp/never.bt"
+check "nothing written after the refusals" test ! -e "$tmp/never.bt"
 "$MM" slam2d "$BAGS/mixed.db3" --topic /scan --out-poses "$tmp/slam.txt" >/dev/null 2>"$tmp/slam.err"
 check "slam2d on the LaserScan topic: 40 poses" test "$(wc -l <"$tmp/slam.txt")" -eq 40
 "$MM" slam2d "$BAGS/mixed_ros1_lz4.bag" --out-poses "$tmp/slam1.txt" >/dev/null 2>&1
