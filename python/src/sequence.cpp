@@ -203,7 +203,7 @@ count from the end) and iteration give :class:`Scan` objects, read one at a time
           py::arg("index"))
       .def_property_readonly(
           "info", [](const PySource& s) { return infoDict(s.source->info()); },
-          "dict: kind ('kitti', 'folder', 'carmen'), path, sensor_to_base (4, 4) float64, "
+          "dict: kind ('kitti', 'folder', 'carmen', 'bag'), path, sensor_to_base (4, 4) float64, "
           "reference_poses (R, 4, 4) float64 (sensor -> reference world; (0, 4, 4) when none), "
           "reference_stamps (R,) or (0,), reference_path, stamps (N,) float64 seconds or (0,), "
           "point_times (bool), planar (bool).")
