@@ -5,31 +5,12 @@
 /// budget) costs address space, not resident memory, until decompression fails on the size.
 
 #include <cstdint>
-#include <memory>
-#include <new>
 #include <vector>
+
+#include "metricmap/detail/parallel.h"
 
 namespace metricmap::detail {
 
-template <class T>
-struct DefaultInitAllocator : std::allocator<T> {
-  template <class U>
-  struct rebind {
-    using other = DefaultInitAllocator<U>;
-  };
-  DefaultInitAllocator() = default;
-  template <class U>
-  DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept {}
-  template <class U>
-  void construct(U* p) noexcept {
-    ::new (static_cast<void*>(p)) U;  // default-initialised: no zeroing
-  }
-  template <class U, class... A>
-  void construct(U* p, A&&... a) {
-    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
-  }
-};
-
-using ChunkBuffer = std::vector<std::uint8_t, DefaultInitAllocator<std::uint8_t>>;
+using ChunkBuffer = std::vector<std::uint8_t, UninitAllocator<std::uint8_t>>;
 
 }  // namespace metricmap::detail
