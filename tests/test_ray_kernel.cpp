@@ -1,6 +1,7 @@
-// The four-lane AVX2 walk marks the same voxels as the two-beam SSE2 walk, bit for bit, on real
-// KITTI scans at several resolutions and max ranges (where the CPU has AVX2; elsewhere both
-// runs take the SSE2 walk and the test still checks the plumbing). The portable walk
+// The eight-lane AVX-512 and four-lane AVX2 walks mark the same voxels as the two-beam SSE2
+// walk, bit for bit, on real KITTI scans at several resolutions and max ranges (where the CPU
+// has AVX-512F / AVX2; elsewhere the runs fall back to a narrower walk and the test still checks
+// the plumbing). The portable walk
 // (RayPath::Portable, forced here on x86) marks the same voxels as both, in the same block
 // order, on random and degenerate beams and on real scans inserted into a LogOddsMap (on CPUs
 // without the SIMD walks both runs take the portable walk).
@@ -24,7 +25,7 @@ namespace {
 using Words = std::pair<std::vector<std::uint64_t>, std::vector<std::uint64_t>>;
 
 std::map<std::uint64_t, Words> cast(const test::WorldScan& scan, double res, double max_range,
-                                    bool simd, detail::RayCastCounts& counts) {
+                                    int lanes, detail::RayCastCounts& counts) {
   detail::RayCastInput in;
   in.xyz = &scan.points[0].x;
   in.stride_bytes = sizeof(pcl::PointXYZ);
@@ -32,7 +33,7 @@ std::map<std::uint64_t, Words> cast(const test::WorldScan& scan, double res, dou
   for (int i = 0; i < 3; ++i) in.origin[i] = scan.origin[i];
   in.resolution = res;
   in.max_range = max_range;
-  in.simd = simd;
+  in.lanes = lanes;
   detail::ScanUpdate out;
   counts = detail::castRays(in, out);
   std::map<std::uint64_t, Words> blocks;
@@ -44,7 +45,7 @@ std::map<std::uint64_t, Words> cast(const test::WorldScan& scan, double res, dou
   return blocks;
 }
 
-TEST(RayKernel, FourLaneWalkMarksTheSameVoxelsAsTheTwoBeamWalk) {
+TEST(RayKernel, EightAndFourLaneWalksMarkTheSameVoxelsAsTheTwoBeamWalk) {
   const double inf = std::numeric_limits<double>::infinity();
   for (std::size_t frame : {0u, 3u}) {
     test::WorldScan scan = test::kittiWorldScan(frame);
@@ -58,29 +59,33 @@ TEST(RayKernel, FourLaneWalkMarksTheSameVoxelsAsTheTwoBeamWalk) {
     for (const auto& [res, range] :
          {std::pair<double, double>{0.2, 50.0}, {0.1, 50.0}, {0.35, inf}, {0.05, 10.0}}) {
       SCOPED_TRACE(testing::Message() << "frame " << frame << " res " << res << " range " << range);
-      detail::RayCastCounts a, b;
-      const auto simd = cast(scan, res, range, true, a);
-      const auto plain = cast(scan, res, range, false, b);
-      EXPECT_EQ(a.beams, b.beams);
-      EXPECT_EQ(a.cut, b.cut);
-      ASSERT_EQ(simd.size(), plain.size());
-      std::size_t differ = 0, free_bits = 0;
-      for (const auto& [key, words] : plain) {
-        const auto it = simd.find(key);
-        ASSERT_NE(it, simd.end());
-        differ += it->second != words ? 1 : 0;
-        for (std::uint64_t w : words.first)
-          free_bits += static_cast<std::size_t>(__builtin_popcountll(w));
+      detail::RayCastCounts b;
+      const auto plain = cast(scan, res, range, 2, b);
+      for (int lanes : {4, 8}) {
+        SCOPED_TRACE(testing::Message() << lanes << " lanes");
+        detail::RayCastCounts a;
+        const auto simd = cast(scan, res, range, lanes, a);
+        EXPECT_EQ(a.beams, b.beams);
+        EXPECT_EQ(a.cut, b.cut);
+        ASSERT_EQ(simd.size(), plain.size());
+        std::size_t differ = 0, free_bits = 0;
+        for (const auto& [key, words] : plain) {
+          const auto it = simd.find(key);
+          ASSERT_NE(it, simd.end());
+          differ += it->second != words ? 1 : 0;
+          for (std::uint64_t w : words.first)
+            free_bits += static_cast<std::size_t>(__builtin_popcountll(w));
+        }
+        EXPECT_EQ(differ, 0u);
+        EXPECT_GT(free_bits, 10000u);  // a real walk
       }
-      EXPECT_EQ(differ, 0u);
-      EXPECT_GT(free_bits, 10000u);  // a real walk
     }
   }
 }
 
 // Beams through voxel corners and edges: the origin at a voxel's centre, ends at whole-voxel
 // offsets with two or three equal components, so the crossing parameters tie at every corner.
-TEST(RayKernel, FourLaneWalkBreaksTiesAsTheTwoBeamWalk) {
+TEST(RayKernel, EightAndFourLaneWalksBreakTiesAsTheTwoBeamWalk) {
   const double res = 0.2;
   test::WorldScan scan;
   scan.origin = Eigen::Vector3f(0.1f, 0.1f, 0.1f);
@@ -96,18 +101,22 @@ TEST(RayKernel, FourLaneWalkBreaksTiesAsTheTwoBeamWalk) {
       }
     }
   }
-  detail::RayCastCounts a, b;
-  const auto simd = cast(scan, res, 100.0, true, a);
-  const auto plain = cast(scan, res, 100.0, false, b);
-  ASSERT_EQ(simd.size(), plain.size());
-  std::size_t differ = 0;
-  for (const auto& [key, words] : plain) {
-    const auto it = simd.find(key);
-    ASSERT_NE(it, simd.end());
-    differ += it->second != words ? 1 : 0;
+  detail::RayCastCounts b;
+  const auto plain = cast(scan, res, 100.0, 2, b);
+  EXPECT_GT(b.beams, 500u);
+  for (int lanes : {4, 8}) {
+    SCOPED_TRACE(testing::Message() << lanes << " lanes");
+    detail::RayCastCounts a;
+    const auto simd = cast(scan, res, 100.0, lanes, a);
+    ASSERT_EQ(simd.size(), plain.size());
+    std::size_t differ = 0;
+    for (const auto& [key, words] : plain) {
+      const auto it = simd.find(key);
+      ASSERT_NE(it, simd.end());
+      differ += it->second != words ? 1 : 0;
+    }
+    EXPECT_EQ(differ, 0u);
   }
-  EXPECT_EQ(differ, 0u);
-  EXPECT_GT(a.beams, 500u);
 }
 
 // --- the portable walk against the SIMD walks ---
@@ -120,7 +129,7 @@ struct Cast {
   bool dense = false;  // the walk used the scan's bit box (else the per-block fallback)
 };
 
-Cast castWith(detail::RayPath path, bool simd, const test::WorldScan& scan, double res,
+Cast castWith(detail::RayPath path, int lanes, const test::WorldScan& scan, double res,
               double max_range) {
   const detail::ScopedRayPath forced(path);
   detail::RayCastInput in;
@@ -130,7 +139,7 @@ Cast castWith(detail::RayPath path, bool simd, const test::WorldScan& scan, doub
   for (int i = 0; i < 3; ++i) in.origin[i] = scan.origin[i];
   in.resolution = res;
   in.max_range = max_range;
-  in.simd = simd;
+  in.lanes = lanes;
   detail::ScanUpdate out;
   Cast c;
   c.counts = detail::castRays(in, out);
@@ -269,11 +278,11 @@ TEST(RayKernel, PortableWalkMarksTheSameVoxelsAsTheSimdWalksOnDegenerateRays) {
     const test::WorldScan scan = degenerateRays(seed++, c.origin, c.res, c.reach, 4000);
     for (double range : {inf, 20.0, 7.5}) {
       SCOPED_TRACE(testing::Message() << c.what << ", max range " << range);
-      const Cast portable = castWith(detail::RayPath::Portable, true, scan, c.res, range);
-      const Cast four = castWith(detail::RayPath::Simd, true, scan, c.res, range);
-      const Cast two = castWith(detail::RayPath::Simd, false, scan, c.res, range);
-      EXPECT_TRUE(sameCast(portable, two));
-      EXPECT_TRUE(sameCast(portable, four));
+      const Cast portable = castWith(detail::RayPath::Portable, 8, scan, c.res, range);
+      for (int lanes : {2, 4, 8}) {
+        const Cast simd = castWith(detail::RayPath::Simd, lanes, scan, c.res, range);
+        EXPECT_TRUE(sameCast(portable, simd)) << lanes << " lanes";
+      }
       EXPECT_TRUE(portable.dense);
       EXPECT_EQ(portable.counts.non_finite, 1u);
       if (range < c.reach / 2) {
@@ -291,8 +300,8 @@ TEST(RayKernel, PortableWalkMarksTheSameVoxelsAsTheSimdWalkBlockByBlock) {
   const test::WorldScan scan = degenerateRays(7, {-1.0f, 0.5f, -0.25f}, res, 40.0f, 150);
   for (double range : {std::numeric_limits<double>::infinity(), 20.0}) {
     SCOPED_TRACE(testing::Message() << "max range " << range);
-    const Cast portable = castWith(detail::RayPath::Portable, true, scan, res, range);
-    const Cast simd = castWith(detail::RayPath::Simd, true, scan, res, range);
+    const Cast portable = castWith(detail::RayPath::Portable, 8, scan, res, range);
+    const Cast simd = castWith(detail::RayPath::Simd, 8, scan, res, range);
     EXPECT_FALSE(portable.dense);
     EXPECT_TRUE(sameCast(portable, simd));
     EXPECT_GT(freeBits(portable), 100000u);

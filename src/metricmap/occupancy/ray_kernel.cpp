@@ -410,8 +410,8 @@ struct BeamFeed {
 /// time). Each lane does stepState's arithmetic, operation for operation, in double, so
 /// the voxels are the same; a lane whose beam ends takes the next one. Voxels of lanes that are
 /// done are marked in the spare word `spare` (bit index), which the caller clears.
-__attribute__((target("avx2"))) void walkFeedAvx2(BeamFeed& feed, LinearBits& free,
-                                                  std::int64_t spare) {
+__attribute__((target("avx2,bmi2"))) void walkFeedAvx2(BeamFeed& feed, LinearBits& free,
+                                                       std::int64_t spare) {
   alignas(32) double tx[4], ty[4], tz[4], dx[4], dy[4], dz[4], len[4];
   alignas(32) std::int64_t idx[4], eidx[4], ix[4], iy[4], iz[4], mark[4];
   int active = 0;
@@ -483,8 +483,96 @@ __attribute__((target("avx2"))) void walkFeedAvx2(BeamFeed& feed, LinearBits& fr
   }
 }
 
+// GCC 12's AVX-512 headers build constants from _mm512_undefined_*: -Wmaybe-uninitialized
+// false positives.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+/// walkFeedAvx2 in the eight lanes of AVX-512 registers (chosen at run time where the CPU has
+/// AVX-512F): the same arithmetic per lane, the axis choice in mask registers (a lane not
+/// stepping on an axis keeps its t where walkFeedAvx2 adds +0.0: the same comparisons follow),
+/// the bit of each lane's voxel computed in the vector unit.
+__attribute__((target("avx512f,bmi2"))) void walkFeedAvx512(BeamFeed& feed, LinearBits& free,
+                                                            std::int64_t spare) {
+  alignas(64) double tx[8], ty[8], tz[8], dx[8], dy[8], dz[8], len[8];
+  alignas(64) std::int64_t idx[8], eidx[8], ix[8], iy[8], iz[8], word[8], bit[8];
+  unsigned active = 0;
+  Beam b;
+  auto* bits = free.bits;
+  const auto load = [&](int l) {  // no intrinsics in here: lambdas do not inherit the target
+    if (!feed.pop(b)) {           // an idle lane: ends at once, marks the spare word
+      tx[l] = ty[l] = tz[l] = dx[l] = dy[l] = dz[l] = 0.0;
+      len[l] = -1.0;
+      idx[l] = eidx[l] = spare;
+      ix[l] = iy[l] = iz[l] = 0;
+      active &= ~(1u << l);
+      return;
+    }
+    tx[l] = b.t[0], ty[l] = b.t[1], tz[l] = b.t[2];
+    dx[l] = b.dt[0], dy[l] = b.dt[1], dz[l] = b.dt[2];
+    len[l] = b.length;
+    idx[l] = free.index(b.k[0], b.k[1], b.k[2]);
+    eidx[l] = free.index(b.ke[0], b.ke[1], b.ke[2]);
+    ix[l] = b.step[0];
+    iy[l] = b.step[1] * free.row_bits;
+    iz[l] = b.step[2] * free.slice_bits;
+    active |= 1u << l;
+  };
+  for (int l = 0; l < 8; ++l) load(l);
+  if (active == 0) return;
+  const __m512i one = _mm512_set1_epi64(1), low6 = _mm512_set1_epi64(63);
+  const __m512i vspare = _mm512_set1_epi64(spare);
+  for (;;) {
+    __m512d vtx = _mm512_load_pd(tx), vty = _mm512_load_pd(ty), vtz = _mm512_load_pd(tz);
+    const __m512d vdx = _mm512_load_pd(dx), vdy = _mm512_load_pd(dy), vdz = _mm512_load_pd(dz);
+    const __m512d vlen = _mm512_load_pd(len);
+    __m512i vidx = _mm512_load_si512(idx);
+    const __m512i veidx = _mm512_load_si512(eidx);
+    const __m512i vix = _mm512_load_si512(ix), viy = _mm512_load_si512(iy);
+    const __m512i viz = _mm512_load_si512(iz);
+    unsigned done = 0;
+    while (done == 0) {
+      // OctoMap's choice, ties included: x if tx < ty and tx < tz, else y if ty < tz, else z
+      const unsigned x_lt_y = _mm512_cmp_pd_mask(vtx, vty, _CMP_LT_OS);
+      const auto mx = static_cast<__mmask8>(x_lt_y & _mm512_cmp_pd_mask(vtx, vtz, _CMP_LT_OS));
+      const auto my = static_cast<__mmask8>(~x_lt_y & _mm512_cmp_pd_mask(vty, vtz, _CMP_LT_OS));
+      const auto mz = static_cast<__mmask8>(~(mx | my));
+      vtx = _mm512_mask_add_pd(vtx, mx, vtx, vdx);
+      vty = _mm512_mask_add_pd(vty, my, vty, vdy);
+      vtz = _mm512_mask_add_pd(vtz, mz, vtz, vdz);
+      const __m512i step = _mm512_mask_blend_epi64(mx, _mm512_mask_blend_epi64(my, viz, viy), vix);
+      vidx = _mm512_add_epi64(vidx, step);
+      // done: the end voxel reached, or the next crossing beyond the end (OctoMap's guard)
+      const __mmask8 stop =
+          _mm512_cmpeq_epi64_mask(vidx, veidx) |
+          _mm512_cmp_pd_mask(_mm512_min_pd(_mm512_min_pd(vtx, vty), vtz), vlen, _CMP_GT_OQ);
+      const __m512i mark = _mm512_mask_blend_epi64(stop, vidx, vspare);
+      _mm512_store_si512(word, _mm512_srli_epi64(mark, 6));
+      _mm512_store_si512(bit, _mm512_sllv_epi64(one, _mm512_and_si512(mark, low6)));
+      for (int l = 0; l < 8; ++l) bits[word[l]] |= static_cast<std::uint64_t>(bit[l]);
+      done = stop & active;
+    }
+    _mm512_store_pd(tx, vtx);
+    _mm512_store_pd(ty, vty);
+    _mm512_store_pd(tz, vtz);
+    _mm512_store_si512(idx, vidx);
+    for (int l = 0; l < 8; ++l) {
+      if (done >> l & 1) load(l);
+    }
+    if (active == 0) return;
+  }
+}
+
+#pragma GCC diagnostic pop
+
+bool haveAvx512() {
+  static const bool yes =
+      __builtin_cpu_supports("avx512f") != 0 && __builtin_cpu_supports("bmi2") != 0;
+  return yes;
+}
+
 bool haveAvx2() {
-  static const bool yes = __builtin_cpu_supports("avx2") != 0;
+  static const bool yes =
+      __builtin_cpu_supports("avx2") != 0 && __builtin_cpu_supports("bmi2") != 0;
   return yes;
 }
 
@@ -670,9 +758,13 @@ RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
       walkPairs<PortableState>(o, ko, out, res, free, hits);
     } else {
 #if METRICMAP_RAY_SIMD
-      if (in.simd && haveAvx2()) {
-        BeamFeed feed{out.ends.data(), out.ends.data() + out.ends.size(), o, ko, res, &free, &hits};
-        walkFeedAvx2(feed, free, static_cast<std::int64_t>(2 * words) * 64);
+      BeamFeed feed{out.ends.data(), out.ends.data() + out.ends.size(), o, ko, res, &free, &hits};
+      const auto spare = static_cast<std::int64_t>(2 * words) * 64;
+      if (in.lanes >= 8 && haveAvx512()) {
+        walkFeedAvx512(feed, free, spare);
+        out.dense[2 * words] = 0;
+      } else if (in.lanes >= 4 && haveAvx2()) {
+        walkFeedAvx2(feed, free, spare);
         out.dense[2 * words] = 0;
       } else {
         walkPairs<LinearState>(o, ko, out, res, free, hits);

@@ -27,9 +27,11 @@ struct RayCastInput {
   /// Most distinct blocks the scan may touch (the memory budget's share): one more throws
   /// CapacityError naming the resolution and the budget.
   std::size_t max_blocks = static_cast<std::size_t>(-1);
-  /// Walk four beams at a time in AVX2 registers where the CPU has AVX2 (the same voxels as
-  /// the two-beam SSE2 walk, which `false` forces: for tests). The portable walk ignores it.
-  bool simd = true;
+  /// Most beams walked at once on the SIMD path: 8 in AVX-512 registers where the CPU has
+  /// AVX-512F, else 4 in AVX2 registers where it has AVX2, else 2 (SSE2). Every width marks the
+  /// same voxels; a smaller value forces a narrower walk (for tests and benchmarks). The
+  /// portable walk ignores it.
+  int lanes = 8;
 };
 
 /// \brief Beams cast and skipped.
