@@ -2,13 +2,47 @@
 
 #include <sstream>
 
+#include <benchmark/benchmark.h>
+
+#include <fstream>
+
 #include "metricmap/io/cloud_reader.h"
+#include "metricmap/occupancy/ray_kernel.h"
 
 #ifndef METRICMAP_DATA_DIR
 #error "METRICMAP_DATA_DIR must be defined"
 #endif
 
 namespace metricmap::bench {
+
+namespace {
+
+// "model name (family F model M stepping S)" of the first CPU: virtual machines often name only
+// the vendor's line, the numbers tell the generation.
+std::string cpuModel() {
+  std::ifstream info("/proc/cpuinfo");
+  std::string name = "unknown", numbers;
+  for (std::string line; std::getline(info, line) && !line.empty();) {
+    const std::size_t colon = line.find(':');
+    if (colon == std::string::npos || colon + 2 > line.size()) continue;
+    const std::string key = line.substr(0, line.find_first_of("\t:"));
+    const std::string value = line.substr(colon + 2);
+    if (key == "model name") name = value;
+    if (key == "cpu family") numbers += "family " + value;
+    if (key == "model") numbers += " model " + value;
+    if (key == "stepping") numbers += " stepping " + value;
+  }
+  return numbers.empty() ? name : name + " (" + numbers + ")";
+}
+
+// The CPU model and the ray walk it gets, in the header of every run's output.
+const bool kContext = [] {
+  benchmark::AddCustomContext("cpu_model", cpuModel());
+  benchmark::AddCustomContext("ray_walk", detail::simdWalkName());
+  return true;
+}();
+
+}  // namespace
 
 pcl::PointCloud<pcl::PointXYZ>::ConstPtr kittiCloud(std::size_t min_points) {
   static pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;

@@ -578,6 +578,20 @@ bool haveAvx2() {
 
 #endif  // METRICMAP_RAY_SIMD
 
+}  // namespace
+
+const char* simdWalkName() {
+#if METRICMAP_RAY_SIMD
+  if (haveAvx512()) return "avx512 (8 lanes)";
+  if (haveAvx2()) return "avx2 (4 lanes)";
+  return "sse2 (2 lanes)";
+#else
+  return "portable";
+#endif
+}
+
+namespace {
+
 /// Two beams at a time until one ends, then the other alone (State: LinearState for the SSE2
 /// walk, PortableState for the portable one).
 template <typename State>

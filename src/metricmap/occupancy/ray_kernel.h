@@ -62,6 +62,10 @@ enum class RayPath {
 /// value (Simd at start).
 RayPath rayPath();
 
+/// \brief The widest walk castRays takes on this CPU with `lanes` = 8 and RayPath::Simd:
+/// "avx512 (8 lanes)", "avx2 (4 lanes)", "sse2 (2 lanes)" or "portable" (for reports).
+const char* simdWalkName();
+
 /// \brief Forces the walk of every later castRays in the process, so that CI can run the
 /// portable walk on x86 and benchmarks can compare the two. A relaxed atomic that castRays
 /// reads once per scan (never per beam or voxel): any thread may call it; a scan being cast
