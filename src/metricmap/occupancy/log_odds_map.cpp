@@ -128,36 +128,59 @@ void LogOddsMap::applyScan(ScanInsertReport& report) {
   const std::size_t need = blocks_.size() + scratch_.blocks.size();
   if (need > blocks_.capacity()) blocks_.reserve(std::max(need, 2 * blocks_.capacity()));
   // New blocks join the map in key order: the same order however the beams were shared out.
-  order_.resize(scratch_.blocks.size());
-  for (std::size_t k = 0; k < order_.size(); ++k) order_[k] = static_cast<std::uint32_t>(k);
+  const std::size_t count = scratch_.blocks.size();
+  order_.resize(count);
+  for (std::size_t k = 0; k < count; ++k) order_[k] = static_cast<std::uint32_t>(k);
   std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
     return scratch_.blocks[a].key < scratch_.blocks[b].key;
   });
-  for (const std::uint32_t k : order_) {
-    const detail::ScanBlock& sb = scratch_.blocks[k];
-    VoxelBlock& b = blockFor(sb.key);
-    for (int w = 0; w < kBlockWords; ++w) {
-      std::uint64_t h = sb.hit[w];
-      std::uint64_t f = sb.free[w] & ~h;
-      known_ += static_cast<std::size_t>(__builtin_popcountll((h | f) & ~b.known[w]));
-      report.hit_voxels += static_cast<std::size_t>(__builtin_popcountll(h));
-      report.miss_voxels += static_cast<std::size_t>(__builtin_popcountll(f));
-      const std::uint64_t unknown = ~b.known[w];
-      b.known[w] |= h | f;
-      float* v = b.log_odds + w * 64;
-      while (h != 0) {
-        const int i = __builtin_ctzll(h);
-        h &= h - 1;
-        const float prev = (unknown >> i) & 1 ? 0.0f : v[i];
-        v[i] = clampLogOdds(prev + hit, lo, hi);
-      }
-      while (f != 0) {
-        const int i = __builtin_ctzll(f);
-        f &= f - 1;
-        const float prev = (unknown >> i) & 1 ? 0.0f : v[i];
-        v[i] = clampLogOdds(prev + miss, lo, hi);
+  // Each scan block's map block, found or added here (the only step that changes the map's
+  // layout); then the blocks' voxels are updated in shares, each block by one thread.
+  targets_.resize(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    targets_[k] =
+        static_cast<std::uint32_t>(&blockFor(scratch_.blocks[order_[k]].key) - blocks_.data());
+  }
+  struct Counts {
+    std::size_t known = 0, hits = 0, misses = 0;
+  };
+  const unsigned threads = resolveThreads(threads_, count, 2048);
+  std::vector<Counts> counts(threads);
+  parallelRun(threads, [&](unsigned t) {
+    const auto [begin, end] = chunkOf(count, threads, t);
+    Counts c;
+    for (std::size_t k = begin; k < end; ++k) {
+      const detail::ScanBlock& sb = scratch_.blocks[order_[k]];
+      VoxelBlock& b = blocks_[targets_[k]];
+      for (int w = 0; w < kBlockWords; ++w) {
+        std::uint64_t h = sb.hit[w];
+        std::uint64_t f = sb.free[w] & ~h;
+        c.known += static_cast<std::size_t>(__builtin_popcountll((h | f) & ~b.known[w]));
+        c.hits += static_cast<std::size_t>(__builtin_popcountll(h));
+        c.misses += static_cast<std::size_t>(__builtin_popcountll(f));
+        const std::uint64_t unknown = ~b.known[w];
+        b.known[w] |= h | f;
+        float* v = b.log_odds + w * 64;
+        while (h != 0) {
+          const int i = __builtin_ctzll(h);
+          h &= h - 1;
+          const float prev = (unknown >> i) & 1 ? 0.0f : v[i];
+          v[i] = clampLogOdds(prev + hit, lo, hi);
+        }
+        while (f != 0) {
+          const int i = __builtin_ctzll(f);
+          f &= f - 1;
+          const float prev = (unknown >> i) & 1 ? 0.0f : v[i];
+          v[i] = clampLogOdds(prev + miss, lo, hi);
+        }
       }
     }
+    counts[t] = c;
+  });
+  for (const Counts& c : counts) {
+    known_ += c.known;
+    report.hit_voxels += c.hits;
+    report.miss_voxels += c.misses;
   }
 }
 

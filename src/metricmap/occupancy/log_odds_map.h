@@ -160,6 +160,7 @@ class LogOddsMap {
   detail::ScanUpdate scratch_;
   std::vector<detail::ScanUpdate> thread_scratch_;  ///< threads 1.. of a threaded insert
   std::vector<std::uint32_t> order_;                ///< the scan's blocks in key order
+  std::vector<std::uint32_t> targets_;              ///< their map blocks, in that order
   unsigned threads_ = 1;
 };
 
