@@ -1,7 +1,6 @@
 // metricmap map SOURCE --poses reference|odometry: a 2D hit map and a 2D log-odds occupancy grid
 // (map_server PGM + YAML) and the global cloud of any scan source, built from the source's
 // reference poses or from odometry.
-#include <cstdio>
 #include <memory>
 
 #include <unistd.h>
@@ -10,6 +9,7 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "map_report.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/map_server.h"
@@ -76,34 +76,9 @@ void run(const MapOptions& o) {
     savePcdAtomic(outputs.stage(o.out_cloud), maps.globalCloud(), parsePcdFormat(o.pcd_format));
   }
   const nlohmann::json grid = writeOccupancy2D(maps, o.grid, outputs);
-  nlohmann::json j = {{"source", source->info().path},
-                      {"poses", o.poses},
-                      {"frames", frames.size()},
-                      {"map",
-                       {{"width", image.width},
-                        {"height", image.height},
-                        {"resolution", c.map_resolution},
-                        {"occupied_cells", maps.occupiedCells()}}},
-                      {"seconds", secondsSince(t_start)}};
-  if (!grid.is_null()) j["occupancy_2d"] = grid;
-  if (o.format == "json") {
-    emit(j.dump(2) + "\n", outputs);
-    return;
-  }
-  char line[256];
-  std::snprintf(line, sizeof line,
-                "%zu frames (%s poses): map %d x %d cells of %g m, %zu occupied, %.2f s\n",
-                frames.size(), o.poses.c_str(), image.width, image.height, c.map_resolution,
-                maps.occupiedCells(), secondsSince(t_start));
-  std::string text = line;
-  if (!grid.is_null()) {
-    std::snprintf(line, sizeof line,
-                  "2D occupancy: %d x %d cells of %g m, %zu occupied, %zu free\n",
-                  grid["width"].get<int>(), grid["height"].get<int>(), o.grid.resolution,
-                  grid["occupied_cells"].get<std::size_t>(), grid["free_cells"].get<std::size_t>());
-    text += line;
-  }
-  emit(text, outputs);
+  const MapReportFigures figures{source->info().path,  o.poses, frames.size(),    c.map_resolution,
+                                 maps.occupiedCells(), grid,    o.grid.resolution};
+  emit(mapReport(o.format, image, figures, t_start), outputs);
 }
 
 }  // namespace

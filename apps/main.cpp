@@ -97,14 +97,23 @@ int main(int argc, char** argv) {
                        names + "; see --help)");
     }
   }
+  // Help and version text that cannot be written (a full disk, a closed pipe) is an error too.
+  const auto printed = [](int code) {
+    std::cout.flush();
+    if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout) != 0) {
+      std::cerr << "metricmap: error: cannot write to standard output\n";
+      return 1;
+    }
+    return code;
+  };
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return printed(app.exit(e));
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return printed(app.exit(e));
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return printed(app.exit(e));
   } catch (const CLI::ParseError& e) {
     return usageError(e.what());
   } catch (const metricmap::cli::UsageError& e) {

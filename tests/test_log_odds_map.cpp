@@ -63,9 +63,18 @@ TEST(LogOddsMap, ParametersAreChecked) {
     p.max_range = m;
     EXPECT_THROW(LogOddsMap{p}, std::invalid_argument) << m;
   }
+  // a hit must raise occupancy and a miss lower it: else no voxel is ever occupied (or free)
+  for (double hit : {1.0, 0.5, 0.2, 0.0, std::nan("")}) {
+    LogOddsParams p;
+    p.prob_hit = hit;
+    EXPECT_THROW(LogOddsMap{p}, std::invalid_argument) << hit;
+  }
+  for (double miss : {0.0, 0.5, 0.8, 1.0, std::nan("")}) {
+    LogOddsParams p;
+    p.prob_miss = miss;
+    EXPECT_THROW(LogOddsMap{p}, std::invalid_argument) << miss;
+  }
   LogOddsParams p;
-  p.prob_hit = 1.0;
-  EXPECT_THROW(LogOddsMap{p}, std::invalid_argument);
   p = LogOddsParams();
   p.clamp_min = 0.9;
   p.clamp_max = 0.2;

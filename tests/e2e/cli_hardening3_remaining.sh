@@ -156,6 +156,13 @@ check "nothing written by a refused run" test -z "$(ls -A "$o")"
 rc=0
 "$MM" lines "$csv" --svg "$o/l.svg" >/dev/full 2>/dev/null || rc=$?
 check "lines --svg > /dev/full: exit 1, no drawing" test "$rc" = 1 -a ! -e "$o/l.svg"
+for args in "--help" "--version" "grid --help" "slam2d --help"; do
+  rc=0
+  # shellcheck disable=SC2086
+  "$MM" $args >/dev/full 2>"$tmp/full_err" || rc=$?
+  check "metricmap $args > /dev/full: exit 1 naming standard output" \
+    test "$rc" = 1 -a "$(grep -c 'cannot write to standard output' "$tmp/full_err")" = 1
+done
 
 # What applies is still read or accepted.
 check "a .npy cloud: info, grid, octree" bash -c \

@@ -133,6 +133,10 @@ expect 2 "unknown SLAM parameter 'loop_min_scor' (did you mean loop_min_score?)"
   "$MM" slam2d "$tmp/s40.clf" --set loop_min_scor=0.5 --out-poses "$tmp/x.tum"
 expect 2 "--set: prob_hit must be in (0.5, 1)" -- \
   "$MM" slam2d "$tmp/s40.clf" --set prob_hit=2 --out-poses "$tmp/x.tum"
+expect 2 "--set: map_resolution must be finite and > 0, got -1" -- \
+  "$MM" slam2d "$tmp/s40.clf" --set map_resolution=-1 --out-poses "$tmp/x.tum"
+expect 2 "--set: map_prob_hit must be in (0.5, 1), got 0.2" -- \
+  "$MM" slam2d "$tmp/s40.clf" --set map_prob_hit=0.2 --out-poses "$tmp/x.tum"
 expect 2 "--set: scans_per_submap: 'x'" -- \
   "$MM" slam2d "$tmp/s40.clf" --set scans_per_submap=x --out-poses "$tmp/x.tum"
 expect 2 "--set resolution and --resolution set the same parameter" -- \

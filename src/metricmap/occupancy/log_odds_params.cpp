@@ -22,8 +22,9 @@ void probability(const std::string& name, double p) {
 void validateLogOddsParams(const LogOddsParams& p) {
   if (!(std::isfinite(p.resolution) && p.resolution > 0.0))
     bad("resolution", p.resolution, "finite and > 0");
-  probability("prob_hit", p.prob_hit);
-  probability("prob_miss", p.prob_miss);
+  // A hit must raise a voxel's occupancy and a miss lower it, or the map says nothing.
+  if (!(p.prob_hit > 0.5 && p.prob_hit < 1.0)) bad("prob_hit", p.prob_hit, "in (0.5, 1)");
+  if (!(p.prob_miss > 0.0 && p.prob_miss < 0.5)) bad("prob_miss", p.prob_miss, "in (0, 0.5)");
   probability("clamp_min", p.clamp_min);
   probability("clamp_max", p.clamp_max);
   probability("occupancy_threshold", p.occupancy_threshold);

@@ -123,7 +123,11 @@ void validateSlam2DConfig(const Slam2DConfig& c) {
   need(c.optimize_every_n_nodes >= 1, "optimize_every_n_nodes must be >= 1");
   need(c.optimize_iterations >= 1, "optimize_iterations must be >= 1");
   need(c.final_iterations >= 1, "final_iterations must be >= 1");
-  validateLogOddsParams(c.map);
+  try {
+    validateLogOddsParams(c.map);
+  } catch (const std::invalid_argument& e) {  // the map's parameters are map_* by name
+    throw std::invalid_argument(std::string("map_") + e.what());
+  }
 }
 
 struct Slam2D::Impl {

@@ -1,0 +1,92 @@
+#include "slam2d_options.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#include "cli_common.h"
+#include "metricmap/common/parse_number.h"
+#include "metricmap/slam/slam_2d_parameters.h"
+
+namespace metricmap::cli {
+namespace {
+
+/// --set NAME=VALUE onto the configuration: each name once, not also given by its own option,
+/// no loop parameter with --no-loop-closure; the whole configuration valid.
+void applySettings(const CLI::App& app, const std::vector<std::string>& settings, bool no_loops,
+                   Slam2DConfig& config) {
+  static const std::vector<std::pair<std::string, std::string>> own = {
+      {"map_resolution", "--map-resolution"},
+      {"resolution", "--resolution"},
+      {"max_range", "--max-range"},
+      {"scans_per_submap", "--scans-per-submap"},
+      {"loop_min_score", "--loop-min-score"},
+      {"loop_linear_window", "--loop-window"},
+      {"loop_angular_window_deg", "--loop-angle"}};
+  std::vector<std::string> seen;
+  for (const std::string& s : settings) {
+    const std::size_t eq = s.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw UsageError("--set: '" + quoteForMessage(s) + "' is not NAME=VALUE");
+    const std::string name = s.substr(0, eq);
+    try {
+      setSlam2DParameter(config, name, s.substr(eq + 1));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--set: ") + e.what());
+    }
+    if (std::find(seen.begin(), seen.end(), name) != seen.end())
+      throw UsageError("--set: " + name + " is given twice");
+    seen.push_back(name);
+    for (const auto& [field, option] : own)
+      if (field == name && app.count(option) > 0)
+        throw UsageError("--set " + name + " and " + option + " set the same parameter");
+    if (no_loops && (name.rfind("loop_", 0) == 0 || name.rfind("wide_", 0) == 0 ||
+                     name == "branch_and_bound_depth"))
+      throw UsageError("--set " + name + " has no effect with --no-loop-closure");
+  }
+  try {
+    validateSlam2DConfig(config);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--set: ") + e.what());
+  }
+}
+
+}  // namespace
+
+void addSlam2DOptions(CLI::App& app, Slam2DOptionValues& o) {
+  Slam2DConfig& c = o.config;
+  app.add_option("--map-resolution", c.map.resolution, "Cell of the map (m)")
+      ->check(finiteIn(0.005, 10))
+      ->capture_default_str();
+  app.add_option("--resolution", c.resolution, "Cell of the submaps (m)")
+      ->check(finiteIn(0.005, 10))
+      ->capture_default_str();
+  app.add_option("--max-range", c.max_range, "Beams beyond: free space only (m)")
+      ->check(finiteIn(0.1, 1000))
+      ->capture_default_str();
+  app.add_option("--scans-per-submap", c.scans_per_submap, "Nodes a submap receives")
+      ->check(countIn(1, 100000))
+      ->capture_default_str();
+  app.add_option("--loop-min-score", c.loop_min_score, "Score a loop closure must reach")
+      ->check(finiteIn(0.01, 0.99))
+      ->capture_default_str();
+  app.add_option("--loop-window", c.loop_linear_window, "Loop search half-width (m)")
+      ->check(finiteIn(0.05, 100))
+      ->capture_default_str();
+  app.add_option("--loop-angle", c.loop_angular_window_deg, "Loop search half-angle (deg)")
+      ->check(finiteIn(0.1, 180))
+      ->capture_default_str();
+  app.add_option("--set", o.set,
+                 "Any SLAM parameter, NAME=VALUE (repeatable; names in docs/SLAM.md)");
+  app.add_flag("--no-loop-closure", o.no_loops, "Local SLAM only (no loop search)");
+}
+
+void applySlam2DOptions(const CLI::App& app, Slam2DOptionValues& o) {
+  for (const char* opt : {"--loop-min-score", "--loop-window", "--loop-angle"})
+    refuseIgnored(app, opt, !o.no_loops, "with --no-loop-closure");
+  applySettings(app, o.set, o.no_loops, o.config);
+  if (o.config.max_range <= o.config.min_range)
+    throw UsageError("--max-range must exceed the minimum range");
+}
+
+}  // namespace metricmap::cli
