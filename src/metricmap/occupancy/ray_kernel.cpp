@@ -192,6 +192,27 @@ struct LinearBits {
     return (x - x0) + (y - y0) * row_bits + (z - z0) * slice_bits;
   }
   void set(std::int64_t i) { bits[i >> 6] |= std::uint64_t{1} << (i & 63); }
+  void set(std::int64_t x, std::int64_t y, std::int64_t z) { set(index(x, y, z)); }
+};
+
+/// A bit per voxel of the scan's box in 8^3-voxel blocks of 512 bits (one cache line each),
+/// blocks x fastest; inside a block a voxel's bit is ScanBlock's (word z & 7, bit
+/// (y & 7) * 8 + (x & 7)). A beam reaches a new cache line only when it enters another block,
+/// where the linear box needs one at every step along y or z.
+struct BlockedBits {
+  std::uint64_t* bits;
+  std::int64_t x0, y0, z0;  ///< the box's first voxel, multiples of 8
+  std::int64_t nbx, nby, nbz;
+  std::int64_t word(std::int64_t x, std::int64_t y, std::int64_t z) const {
+    const std::int64_t rx = x - x0, ry = y - y0, rz = z - z0;
+    return ((((rz >> 3) * nby + (ry >> 3)) * nbx + (rx >> 3)) << 3) | (rz & 7);
+  }
+  static int bit(std::int64_t x, std::int64_t y) {
+    return static_cast<int>(((y & 7) << 3) | (x & 7));
+  }
+  void set(std::int64_t x, std::int64_t y, std::int64_t z) {
+    bits[word(x, y, z)] |= std::uint64_t{1} << bit(x - x0, y - y0);
+  }
 };
 
 // The portable walk: the SSE2 walk's operations one for one in plain double, so the same
@@ -385,20 +406,21 @@ inline bool stepState(LinearState& s, std::uint64_t* bits) {
 
 /// The beams of a scan one at a time for the four-lane walk: marks each end's hit and the
 /// origin's voxel as the pairwise walk does, skips beams that end in the origin's voxel.
+template <typename Bits>
 struct BeamFeed {
   const ScanUpdate::End* next;
   const ScanUpdate::End* last;
   const float* o;
   Key3 ko;
   double res;
-  LinearBits* free;
-  LinearBits* hits;
+  Bits* free;
+  Bits* hits;
   bool pop(Beam& b) {
     while (next != last) {
       const ScanUpdate::End& end = *next++;
-      if (end.hit) hits->set(hits->index(end.k[0], end.k[1], end.k[2]));
+      if (end.hit) hits->set(end.k[0], end.k[1], end.k[2]);
       if (ko.v[0] == end.k[0] && ko.v[1] == end.k[1] && ko.v[2] == end.k[2]) continue;
-      free->set(free->index(ko.v[0], ko.v[1], ko.v[2]));
+      free->set(ko.v[0], ko.v[1], ko.v[2]);
       startBeam(o, end.e, ko, end.k, res, b);
       return true;
     }
@@ -410,7 +432,7 @@ struct BeamFeed {
 /// time). Each lane does stepState's arithmetic, operation for operation, in double, so
 /// the voxels are the same; a lane whose beam ends takes the next one. Voxels of lanes that are
 /// done are marked in the spare word `spare` (bit index), which the caller clears.
-__attribute__((target("avx2,bmi2"))) void walkFeedAvx2(BeamFeed& feed, LinearBits& free,
+__attribute__((target("avx2,bmi2"))) void walkFeedAvx2(BeamFeed<LinearBits>& feed, LinearBits& free,
                                                        std::int64_t spare) {
   alignas(32) double tx[4], ty[4], tz[4], dx[4], dy[4], dz[4], len[4];
   alignas(32) std::int64_t idx[4], eidx[4], ix[4], iy[4], iz[4], mark[4];
@@ -487,14 +509,17 @@ __attribute__((target("avx2,bmi2"))) void walkFeedAvx2(BeamFeed& feed, LinearBit
 // false positives.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-/// walkFeedAvx2 in the eight lanes of AVX-512 registers (chosen at run time where the CPU has
-/// AVX-512F): the same arithmetic per lane, the axis choice in mask registers (a lane not
-/// stepping on an axis keeps its t where walkFeedAvx2 adds +0.0: the same comparisons follow),
-/// the bit of each lane's voxel computed in the vector unit.
-__attribute__((target("avx512f,bmi2"))) void walkFeedAvx512(BeamFeed& feed, LinearBits& free,
-                                                            std::int64_t spare) {
+/// walkFeedAvx2's walk in the eight lanes of AVX-512 registers (chosen at run time where the
+/// CPU has AVX-512F), marking into the blocked box: the same arithmetic per lane, the axis choice
+/// in mask registers (a lane not stepping on an axis keeps its t where walkFeedAvx2 adds +0.0:
+/// the same comparisons follow), each lane's voxel as its coordinates in the box, its word and
+/// bit computed in the vector unit. Voxels of lanes that are done are marked in the spare word
+/// `spare` (bit 0), which the caller clears.
+__attribute__((target("avx512f,bmi2"))) void walkFeedAvx512(BeamFeed<BlockedBits>& feed,
+                                                            BlockedBits& free, std::int64_t spare) {
   alignas(64) double tx[8], ty[8], tz[8], dx[8], dy[8], dz[8], len[8];
-  alignas(64) std::int64_t idx[8], eidx[8], ix[8], iy[8], iz[8], word[8], bit[8];
+  alignas(64) std::int64_t rx[8], ry[8], rz[8], ex[8], ey[8], ez[8], sx[8], sy[8], sz[8];
+  alignas(64) std::int64_t word[8], bit[8];
   unsigned active = 0;
   Beam b;
   auto* bits = free.bits;
@@ -502,33 +527,33 @@ __attribute__((target("avx512f,bmi2"))) void walkFeedAvx512(BeamFeed& feed, Line
     if (!feed.pop(b)) {           // an idle lane: ends at once, marks the spare word
       tx[l] = ty[l] = tz[l] = dx[l] = dy[l] = dz[l] = 0.0;
       len[l] = -1.0;
-      idx[l] = eidx[l] = spare;
-      ix[l] = iy[l] = iz[l] = 0;
+      rx[l] = ry[l] = rz[l] = ex[l] = ey[l] = ez[l] = sx[l] = sy[l] = sz[l] = 0;
       active &= ~(1u << l);
       return;
     }
     tx[l] = b.t[0], ty[l] = b.t[1], tz[l] = b.t[2];
     dx[l] = b.dt[0], dy[l] = b.dt[1], dz[l] = b.dt[2];
     len[l] = b.length;
-    idx[l] = free.index(b.k[0], b.k[1], b.k[2]);
-    eidx[l] = free.index(b.ke[0], b.ke[1], b.ke[2]);
-    ix[l] = b.step[0];
-    iy[l] = b.step[1] * free.row_bits;
-    iz[l] = b.step[2] * free.slice_bits;
+    rx[l] = b.k[0] - free.x0, ry[l] = b.k[1] - free.y0, rz[l] = b.k[2] - free.z0;
+    ex[l] = b.ke[0] - free.x0, ey[l] = b.ke[1] - free.y0, ez[l] = b.ke[2] - free.z0;
+    sx[l] = b.step[0], sy[l] = b.step[1], sz[l] = b.step[2];
     active |= 1u << l;
   };
   for (int l = 0; l < 8; ++l) load(l);
   if (active == 0) return;
-  const __m512i one = _mm512_set1_epi64(1), low6 = _mm512_set1_epi64(63);
-  const __m512i vspare = _mm512_set1_epi64(spare);
+  const __m512i one = _mm512_set1_epi64(1), seven = _mm512_set1_epi64(7);
+  const __m512i vnbx = _mm512_set1_epi64(free.nbx), vnby = _mm512_set1_epi64(free.nby);
+  const __m512i vspare = _mm512_set1_epi64(spare), zero = _mm512_setzero_si512();
   for (;;) {
     __m512d vtx = _mm512_load_pd(tx), vty = _mm512_load_pd(ty), vtz = _mm512_load_pd(tz);
     const __m512d vdx = _mm512_load_pd(dx), vdy = _mm512_load_pd(dy), vdz = _mm512_load_pd(dz);
     const __m512d vlen = _mm512_load_pd(len);
-    __m512i vidx = _mm512_load_si512(idx);
-    const __m512i veidx = _mm512_load_si512(eidx);
-    const __m512i vix = _mm512_load_si512(ix), viy = _mm512_load_si512(iy);
-    const __m512i viz = _mm512_load_si512(iz);
+    __m512i vrx = _mm512_load_si512(rx), vry = _mm512_load_si512(ry);
+    __m512i vrz = _mm512_load_si512(rz);
+    const __m512i vex = _mm512_load_si512(ex), vey = _mm512_load_si512(ey);
+    const __m512i vez = _mm512_load_si512(ez);
+    const __m512i vsx = _mm512_load_si512(sx), vsy = _mm512_load_si512(sy);
+    const __m512i vsz = _mm512_load_si512(sz);
     unsigned done = 0;
     while (done == 0) {
       // OctoMap's choice, ties included: x if tx < ty and tx < tz, else y if ty < tz, else z
@@ -539,22 +564,35 @@ __attribute__((target("avx512f,bmi2"))) void walkFeedAvx512(BeamFeed& feed, Line
       vtx = _mm512_mask_add_pd(vtx, mx, vtx, vdx);
       vty = _mm512_mask_add_pd(vty, my, vty, vdy);
       vtz = _mm512_mask_add_pd(vtz, mz, vtz, vdz);
-      const __m512i step = _mm512_mask_blend_epi64(mx, _mm512_mask_blend_epi64(my, viz, viy), vix);
-      vidx = _mm512_add_epi64(vidx, step);
+      vrx = _mm512_mask_add_epi64(vrx, mx, vrx, vsx);
+      vry = _mm512_mask_add_epi64(vry, my, vry, vsy);
+      vrz = _mm512_mask_add_epi64(vrz, mz, vrz, vsz);
       // done: the end voxel reached, or the next crossing beyond the end (OctoMap's guard)
       const __mmask8 stop =
-          _mm512_cmpeq_epi64_mask(vidx, veidx) |
+          (_mm512_cmpeq_epi64_mask(vrx, vex) & _mm512_cmpeq_epi64_mask(vry, vey) &
+           _mm512_cmpeq_epi64_mask(vrz, vez)) |
           _mm512_cmp_pd_mask(_mm512_min_pd(_mm512_min_pd(vtx, vty), vtz), vlen, _CMP_GT_OQ);
-      const __m512i mark = _mm512_mask_blend_epi64(stop, vidx, vspare);
-      _mm512_store_si512(word, _mm512_srli_epi64(mark, 6));
-      _mm512_store_si512(bit, _mm512_sllv_epi64(one, _mm512_and_si512(mark, low6)));
+      // the block (x fastest), its word z & 7, the bit (y & 7) * 8 + (x & 7); coordinates in
+      // the box are >= 0 and the block counts < 2^32 (the box's size limit)
+      const __m512i block = _mm512_add_epi64(
+          _mm512_mul_epu32(_mm512_add_epi64(_mm512_mul_epu32(_mm512_srli_epi64(vrz, 3), vnby),
+                                            _mm512_srli_epi64(vry, 3)),
+                           vnbx),
+          _mm512_srli_epi64(vrx, 3));
+      const __m512i w = _mm512_or_si512(_mm512_slli_epi64(block, 3), _mm512_and_si512(vrz, seven));
+      const __m512i pos = _mm512_or_si512(_mm512_slli_epi64(_mm512_and_si512(vry, seven), 3),
+                                          _mm512_and_si512(vrx, seven));
+      _mm512_store_si512(word, _mm512_mask_blend_epi64(stop, w, vspare));
+      _mm512_store_si512(bit, _mm512_sllv_epi64(one, _mm512_mask_blend_epi64(stop, pos, zero)));
       for (int l = 0; l < 8; ++l) bits[word[l]] |= static_cast<std::uint64_t>(bit[l]);
       done = stop & active;
     }
     _mm512_store_pd(tx, vtx);
     _mm512_store_pd(ty, vty);
     _mm512_store_pd(tz, vtz);
-    _mm512_store_si512(idx, vidx);
+    _mm512_store_si512(rx, vrx);
+    _mm512_store_si512(ry, vry);
+    _mm512_store_si512(rz, vrz);
     for (int l = 0; l < 8; ++l) {
       if (done >> l & 1) load(l);
     }
@@ -659,6 +697,28 @@ void harvest(LinearBits& box, std::int64_t words_per_row, std::int64_t rows_y, s
   }
 }
 
+/// Moves the set bits of a BlockedBits box into the scan's blocks (free or hit words), zeroing
+/// them: each 512-bit line is one block's words.
+void harvestBlocked(BlockedBits& box, bool hit, Marker& marker) {
+  std::uint64_t* line = box.bits;
+  for (std::int64_t bz = 0; bz < box.nbz; ++bz) {
+    for (std::int64_t by = 0; by < box.nby; ++by) {
+      for (std::int64_t bx = 0; bx < box.nbx; ++bx, line += kBlockWords) {
+        std::uint64_t any = 0;
+        for (int w = 0; w < kBlockWords; ++w) any |= line[w];
+        if (any == 0) continue;
+        ScanBlock& sb = marker.blockAt((box.x0 >> kBlockShift) + bx, (box.y0 >> kBlockShift) + by,
+                                       (box.z0 >> kBlockShift) + bz);
+        std::uint64_t* dst = hit ? sb.hit : sb.free;
+        for (int w = 0; w < kBlockWords; ++w) {
+          dst[w] |= line[w];
+          line[w] = 0;
+        }
+      }
+    }
+  }
+}
+
 /// Walks every beam of the scan, marking the voxels from the origin's up to, not including,
 /// the end's as free and the end voxels of unclipped beams as hits.
 template <typename Sink>
@@ -756,10 +816,45 @@ RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
     lo[i] -= 2;
     hi[i] += 2;
   }
+  Marker marker(out, in.max_blocks, in.resolution);
+#if METRICMAP_RAY_SIMD
+  if (!portable && in.lanes >= 8 && haveAvx512()) {
+    // The eight-lane walk's box: whole blocks from multiples of 8 on every axis.
+    const std::int64_t bx0 = lo[0] >> kBlockShift, by0 = lo[1] >> kBlockShift;
+    const std::int64_t bz0 = lo[2] >> kBlockShift;
+    BlockedBits free{nullptr,
+                     bx0 * kBlockEdge,
+                     by0 * kBlockEdge,
+                     bz0 * kBlockEdge,
+                     (hi[0] >> kBlockShift) - bx0 + 1,
+                     (hi[1] >> kBlockShift) - by0 + 1,
+                     (hi[2] >> kBlockShift) - bz0 + 1};
+    const std::int64_t box_words = free.nbx * free.nby * free.nbz * kBlockWords;
+    if (box_words <= kDenseWordLimit) {
+      const auto words = static_cast<std::size_t>(box_words);
+      // free bits, hit bits, and one spare word for the idle lanes
+      if (out.dense.size() < 2 * words + 1) out.dense.assign(2 * words + 1, 0);
+      free.bits = out.dense.data();
+      BlockedBits hits = free;
+      hits.bits = out.dense.data() + words;
+      BeamFeed<BlockedBits> feed{
+          out.ends.data(), out.ends.data() + out.ends.size(), o, ko, res, &free, &hits};
+      walkFeedAvx512(feed, free, static_cast<std::int64_t>(2 * words));
+      out.dense[2 * words] = 0;
+      try {
+        harvestBlocked(free, false, marker);
+        harvestBlocked(hits, true, marker);
+      } catch (...) {  // too many blocks: leave the reused bitmap clear for the next scan
+        std::fill(out.dense.begin(), out.dense.begin() + static_cast<std::ptrdiff_t>(2 * words), 0);
+        throw;
+      }
+      return counts;
+    }
+  }
+#endif
   const std::int64_t x0 = (lo[0] >> 6) * 64;  // a multiple of 64 (and of 8)
   const std::int64_t words_per_row = ((hi[0] - x0) >> 6) + 1;
   const std::int64_t ny = hi[1] - lo[1] + 1, nz = hi[2] - lo[2] + 1;
-  Marker marker(out, in.max_blocks, in.resolution);
   if (words_per_row * ny * nz <= kDenseWordLimit) {
     const auto words = static_cast<std::size_t>(words_per_row * ny * nz);
     // free bits, hit bits, and one spare word for the four-lane walk's idle lanes
@@ -772,13 +867,10 @@ RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
       walkPairs<PortableState>(o, ko, out, res, free, hits);
     } else {
 #if METRICMAP_RAY_SIMD
-      BeamFeed feed{out.ends.data(), out.ends.data() + out.ends.size(), o, ko, res, &free, &hits};
-      const auto spare = static_cast<std::int64_t>(2 * words) * 64;
-      if (in.lanes >= 8 && haveAvx512()) {
-        walkFeedAvx512(feed, free, spare);
-        out.dense[2 * words] = 0;
-      } else if (in.lanes >= 4 && haveAvx2()) {
-        walkFeedAvx2(feed, free, spare);
+      BeamFeed<LinearBits> feed{
+          out.ends.data(), out.ends.data() + out.ends.size(), o, ko, res, &free, &hits};
+      if (in.lanes >= 4 && haveAvx2()) {
+        walkFeedAvx2(feed, free, static_cast<std::int64_t>(2 * words) * 64);
         out.dense[2 * words] = 0;
       } else {
         walkPairs<LinearState>(o, ko, out, res, free, hits);
