@@ -10,6 +10,7 @@
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/detail/parallel.h"
 #include "metricmap/exceptions.h"
+#include "metricmap/occupancy/block_update.h"
 #include "metricmap/occupancy/ray_kernel.h"
 
 namespace metricmap {
@@ -123,7 +124,6 @@ ScanInsertReport LogOddsMap::insertRaw(const float* xyz, std::size_t stride_byte
 }
 
 void LogOddsMap::applyScan(ScanInsertReport& report) {
-  const float hit = hit_, miss = miss_, lo = clamp_min_, hi = clamp_max_;
   // at most one (geometric) growth per scan
   const std::size_t need = blocks_.size() + scratch_.blocks.size();
   if (need > blocks_.capacity()) blocks_.reserve(std::max(need, 2 * blocks_.capacity()));
@@ -141,43 +141,20 @@ void LogOddsMap::applyScan(ScanInsertReport& report) {
     targets_[k] =
         static_cast<std::uint32_t>(&blockFor(scratch_.blocks[order_[k]].key) - blocks_.data());
   }
-  struct Counts {
-    std::size_t known = 0, hits = 0, misses = 0;
-  };
+  // The AVX-512 update where the walk is not forced portable (tests compare the two).
+  const bool simd = detail::rayPath() == detail::RayPath::Simd;
+  const detail::LogOddsStep step{hit_, miss_, clamp_min_, clamp_max_};
   const unsigned threads = resolveThreads(threads_, count, 2048);
-  std::vector<Counts> counts(threads);
+  std::vector<detail::BlockUpdateCounts> counts(threads);
   parallelRun(threads, [&](unsigned t) {
     const auto [begin, end] = chunkOf(count, threads, t);
-    Counts c;
+    detail::BlockUpdateCounts c;
     for (std::size_t k = begin; k < end; ++k) {
-      const detail::ScanBlock& sb = scratch_.blocks[order_[k]];
-      VoxelBlock& b = blocks_[targets_[k]];
-      for (int w = 0; w < kBlockWords; ++w) {
-        std::uint64_t h = sb.hit[w];
-        std::uint64_t f = sb.free[w] & ~h;
-        c.known += static_cast<std::size_t>(__builtin_popcountll((h | f) & ~b.known[w]));
-        c.hits += static_cast<std::size_t>(__builtin_popcountll(h));
-        c.misses += static_cast<std::size_t>(__builtin_popcountll(f));
-        const std::uint64_t unknown = ~b.known[w];
-        b.known[w] |= h | f;
-        float* v = b.log_odds + w * 64;
-        while (h != 0) {
-          const int i = __builtin_ctzll(h);
-          h &= h - 1;
-          const float prev = (unknown >> i) & 1 ? 0.0f : v[i];
-          v[i] = clampLogOdds(prev + hit, lo, hi);
-        }
-        while (f != 0) {
-          const int i = __builtin_ctzll(f);
-          f &= f - 1;
-          const float prev = (unknown >> i) & 1 ? 0.0f : v[i];
-          v[i] = clampLogOdds(prev + miss, lo, hi);
-        }
-      }
+      detail::updateBlock(scratch_.blocks[order_[k]], blocks_[targets_[k]], step, c, simd);
     }
     counts[t] = c;
   });
-  for (const Counts& c : counts) {
+  for (const detail::BlockUpdateCounts& c : counts) {
     known_ += c.known;
     report.hit_voxels += c.hits;
     report.miss_voxels += c.misses;
