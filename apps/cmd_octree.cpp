@@ -46,7 +46,7 @@ void runOctree(const OctreeOptions& o, const CLI::App& app) {
   OutputSet outputs;  // committed once the report is printed
   if (!o.out.empty()) savePcdAtomic(outputs.stage(o.out), means, parsePcdFormat(o.pcd_format));
   if (!o.leaves.empty())
-    writeTextAtomic(outputs.stage(o.leaves), octreeLeavesCsv(octree.getNodes()));
+    writeTextAtomic(outputs.stage(o.leaves), octreeLeavesCsv(octree.getResult()));
 
   const OctreeStatistics& s = octree.getStatistics();
   if (o.format == "json") {

@@ -65,13 +65,14 @@ Eigen::Vector3d refSum(const RefNode& n, const Cloud& c) {
   return s;
 }
 
-void compareNodes(const RefNode& ref, const std::vector<OctreeNode>& nodes, std::size_t id,
-                  const Cloud& c, std::size_t& visited) {
+void compareNodes(const RefNode& ref, const OctreeResult& tree, std::size_t id, const Cloud& c,
+                  std::size_t& visited) {
   ++visited;
-  const OctreeNode& n = nodes[id];
+  const OctreeNode& n = tree.nodes[id];
   ASSERT_EQ(n.depth, ref.depth);
-  ASSERT_EQ(n.min, ref.lo) << "node " << id;
-  ASSERT_EQ(n.max, ref.hi) << "node " << id;
+  const OctreeBox box = tree.bounds(id);
+  ASSERT_EQ(box.min, ref.lo) << "node " << id;
+  ASSERT_EQ(box.max, ref.hi) << "node " << id;
   ASSERT_EQ(n.isLeaf(), ref.children.empty()) << "node " << id << " depth " << n.depth;
   const std::uint64_t count = refCount(ref);
   ASSERT_EQ(n.count, count) << "node " << id;
@@ -80,7 +81,7 @@ void compareNodes(const RefNode& ref, const std::vector<OctreeNode>& nodes, std:
     ASSERT_LT((n.mean - mean).norm(), 1e-9) << "node " << id;
   }
   for (unsigned o = 0; o < 8 && !n.isLeaf(); ++o) {
-    compareNodes(ref.children[o], nodes, n.child(o), c, visited);
+    compareNodes(ref.children[o], tree, n.child(o), c, visited);
   }
 }
 
@@ -103,8 +104,16 @@ void checkAgainstReference(const Cloud::Ptr& cloud, std::size_t max_points, floa
   refBuild(root, *cloud, max_points, min_cell);
 
   std::size_t visited = 0;
-  compareNodes(root, octree.getNodes(), 0, *cloud, visited);
+  compareNodes(root, octree.getResult(), 0, *cloud, visited);
   EXPECT_EQ(visited, octree.getNodes().size());
+  // The one-pass form gives every node the same box, bit for bit.
+  const std::vector<OctreeBox> boxes = octree.getResult().allBounds();
+  ASSERT_EQ(boxes.size(), octree.getNodes().size());
+  for (std::size_t id = 0; id < boxes.size(); ++id) {
+    const OctreeBox one = octree.getNodeBounds(id);
+    ASSERT_TRUE(one.min == boxes[id].min && one.max == boxes[id].max) << "node " << id;
+  }
+  EXPECT_THROW(octree.getNodeBounds(boxes.size()), std::out_of_range);
 }
 
 void checkInvariants(const AdaptiveOctree<pcl::PointXYZ>& octree, std::size_t n_points) {
@@ -172,8 +181,9 @@ TEST(AdaptiveOctree, InvariantsOnRealData) {
   for (std::size_t k = 0; k < means.size(); ++k) {
     const OctreeNode& n = octree.getNodes()[leaves[k]];
     EXPECT_FLOAT_EQ(means[k].x, static_cast<float>(n.mean.x()));
-    EXPECT_TRUE((n.mean.array() >= n.min.array() - 1e-9).all() &&
-                (n.mean.array() <= n.max.array() + 1e-9).all());
+    const OctreeBox box = octree.getNodeBounds(leaves[k]);
+    EXPECT_TRUE((n.mean.array() >= box.min.array() - 1e-9).all() &&
+                (n.mean.array() <= box.max.array() + 1e-9).all());
   }
 }
 

@@ -56,7 +56,7 @@ TEST_P(OctreeVsPcl, SameOccupiedLeaves) {
   for (std::size_t id : octree.getOccupiedLeaves()) {
     const OctreeNode& n = octree.getNodes()[id];
     ASSERT_EQ(n.depth, static_cast<unsigned>(k));
-    const Eigen::Vector3d key = ((n.min - lo) / res).array().round();
+    const Eigen::Vector3d key = ((octree.getNodeBounds(id).min - lo) / res).array().round();
     actual[Key{static_cast<long>(key.x()), static_cast<long>(key.y()),
                static_cast<long>(key.z())}] = n.count;
   }

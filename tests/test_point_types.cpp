@@ -58,8 +58,8 @@ TYPED_TEST(PointTypes, GridAndOctreeMatchPointXyz) {
   ASSERT_EQ(o1.getNodes().size(), o2.getNodes().size());
   for (std::size_t i = 0; i < o1.getNodes().size(); ++i) {
     const OctreeNode &a = o1.getNodes()[i], &b = o2.getNodes()[i];
-    ASSERT_EQ(a.min, b.min);
-    ASSERT_EQ(a.max, b.max);
+    ASSERT_EQ(o1.getNodeBounds(i).min, o2.getNodeBounds(i).min);
+    ASSERT_EQ(o1.getNodeBounds(i).max, o2.getNodeBounds(i).max);
     ASSERT_EQ(a.count, b.count);
     ASSERT_EQ(a.mean, b.mean);
     ASSERT_EQ(a.first_child, b.first_child);

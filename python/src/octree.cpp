@@ -37,6 +37,18 @@ py::array nodeView(py::object self, const T* first, std::size_t rows, py::ssize_
                    {py::ssize_t(sizeof(OctreeNode)), py::ssize_t(sizeof(T))}, self);
 }
 
+/// Lower (or upper) corners of every node as a new (K, 3) array.
+py::array_t<double> corners(const OctreeResult& r, bool upper) {
+  py::array_t<double> a({py::ssize_t(r.nodes.size()), py::ssize_t(3)});
+  double* d = a.mutable_data();
+  const std::vector<OctreeBox> boxes = r.allBounds();
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const Eigen::Vector3d& c = upper ? boxes[i].max : boxes[i].min;
+    for (int k = 0; k < 3; ++k) d[3 * i + k] = c[k];
+  }
+  return a;
+}
+
 }  // namespace
 
 void initOctree(py::module_& m) {
@@ -50,21 +62,12 @@ Node arrays are read-only views of the nodes held by this object (they keep it a
           "dict: total_nodes, leaf_nodes, internal_nodes, occupied_leaves, empty_leaves, "
           "mean_points_per_occupied_leaf, points, max_depth, skipped_points.")
       .def_property_readonly(
-          "mins",
-          [](py::object self) {
-            const auto& r = self.cast<const OctreeResult&>();
-            return nodeView(self, r.nodes.empty() ? nullptr : r.nodes[0].min.data(), r.nodes.size(),
-                            3);
-          },
-          "(K, 3) float64 view: lower corner of each node, metres.")
+          "mins", [](const OctreeResult& r) { return corners(r, false); },
+          "(K, 3) float64 (new array): lower corner of each node, metres (nodes do not store "
+          "their bounds; they are computed from the root box).")
       .def_property_readonly(
-          "maxs",
-          [](py::object self) {
-            const auto& r = self.cast<const OctreeResult&>();
-            return nodeView(self, r.nodes.empty() ? nullptr : r.nodes[0].max.data(), r.nodes.size(),
-                            3);
-          },
-          "(K, 3) float64 view: upper corner of each node, metres.")
+          "maxs", [](const OctreeResult& r) { return corners(r, true); },
+          "(K, 3) float64 (new array): upper corner of each node, metres.")
       .def_property_readonly(
           "means",
           [](py::object self) {
@@ -79,7 +82,7 @@ Node arrays are read-only views of the nodes held by this object (they keep it a
             const auto& r = self.cast<const OctreeResult&>();
             return nodeView(self, r.nodes.empty() ? nullptr : &r.nodes[0].count, r.nodes.size(), 1);
           },
-          "(K,) uint64 view: points inside each node.")
+          "(K,) uint32 view: points inside each node.")
       .def_property_readonly(
           "depths",
           [](py::object self) {
@@ -94,7 +97,7 @@ Node arrays are read-only views of the nodes held by this object (they keep it a
             return nodeView(self, r.nodes.empty() ? nullptr : &r.nodes[0].first_point,
                             r.nodes.size(), 1);
           },
-          "(K,) uint64 view: where each node's points start in point_order.")
+          "(K,) uint32 view: where each node's points start in point_order.")
       .def_property_readonly(
           "parents",
           [](const OctreeResult& r) {

@@ -15,6 +15,6 @@ std::string gridCellsCsv(const std::vector<GridCell>& cells);
 
 /// \brief "node,depth,min_x,min_y,min_z,max_x,max_y,max_z,count,mean_x,mean_y,mean_z" for every
 /// leaf (empty ones too), node = index in the node array; 9 significant digits.
-std::string octreeLeavesCsv(const std::vector<OctreeNode>& nodes);
+std::string octreeLeavesCsv(const OctreeResult& octree);
 
 }  // namespace metricmap

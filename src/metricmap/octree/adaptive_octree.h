@@ -81,6 +81,11 @@ class AdaptiveOctree : public pcl::Filter<PointT> {
   const OctreeStatistics& getStatistics() const { return result_.stats; }
   /// \brief All nodes of the last build; index 0 is the root.
   const std::vector<OctreeNode>& getNodes() const { return result_.nodes; }
+  /// \brief Bounds of node `node_id` (nodes do not store them; see OctreeResult::bounds).
+  /// \throws std::out_of_range for an id that is not a node
+  OctreeBox getNodeBounds(std::size_t node_id) const { return result_.bounds(node_id); }
+  /// \brief Everything the last build produced: nodes, point order, leaves, root box, figures.
+  const OctreeResult& getResult() const { return result_; }
   /// \brief Node ids of the occupied leaves, depth-first.
   const std::vector<std::size_t>& getOccupiedLeaves() const { return result_.occupied_leaves; }
   /// \brief Input positions of a node's points.

@@ -171,6 +171,18 @@ void mortonKeysFast(const PointSpan& points, std::size_t begin, std::size_t end,
 #endif
 }
 
+/// Nodes to reserve (address space only: pages are touched as nodes are written) so that the
+/// node array rarely moves: a bound on the nodes of the tree, as far as it stays under 1 GiB.
+/// Split nodes hold more than max_points points each and are disjoint within a level, so each
+/// level has at most n / (max_points + 1) of them, each with 8 children.
+std::size_t nodeReserve(std::size_t n, std::size_t max_points, unsigned levels) {
+  constexpr std::size_t kMaxBytes = std::size_t{1} << 30;
+  const std::size_t per_level = n / (std::max<std::size_t>(max_points, 1)) + 1;
+  const double bound = 1.0 + 8.0 * static_cast<double>(per_level) * std::max(levels, 1u);
+  const double cap = static_cast<double>(kMaxBytes / sizeof(OctreeNode));
+  return static_cast<std::size_t>(std::min(bound, cap));
+}
+
 }  // namespace
 
 void validateOctreeParams(const OctreeParams& params) {
@@ -234,29 +246,31 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
   });
 
   // Top-down build over the sorted keys; children of a node are 8 consecutive ranges.
+  r.root.min = Eigen::Vector3d(frame.min[0], frame.min[1], frame.min[2]);
+  r.root.max = Eigen::Vector3d(frame.max[0], frame.max[1], frame.max[2]);
   OctreeNode root;
-  root.min = Eigen::Vector3d(frame.min[0], frame.min[1], frame.min[2]);
-  root.max = Eigen::Vector3d(frame.max[0], frame.max[1], frame.max[2]);
-  root.count = n;
+  root.count = static_cast<std::uint32_t>(n);
+  reserveHuge(r.nodes, nodeReserve(n, params.max_points_per_leaf, frame.levels));
   r.nodes.push_back(root);
-  std::vector<std::size_t>& stack = workspace.stack;
-  stack.assign(1, 0);
+  std::vector<OctreeWorkspace::Pending>& stack = workspace.stack;
+  stack.assign(1, {0, r.root});
   while (!stack.empty()) {
-    const std::size_t id = stack.back();
+    const auto [id, box] = stack.back();
     stack.pop_back();
     const OctreeNode node = r.nodes[id];
     const bool split = node.count > params.max_points_per_leaf && node.depth < frame.levels &&
-                       (node.max - node.min).maxCoeff() > params.min_cell_size;
+                       (box.max - box.min).maxCoeff() > params.min_cell_size;
     if (!split) {
       // Popped in depth-first order (children are pushed 7..0), so leaves come in Morton order.
       if (node.count > 0) r.occupied_leaves.push_back(id);
       continue;
     }
+    if (r.nodes.size() > OctreeNode::kNone - 9) throw CapacityError("octree: 2^32 nodes or more");
     const unsigned shift = 3 * (frame.levels - 1 - node.depth);
     if (r.nodes.size() + 8 > r.nodes.capacity()) {  // grow by doubling, on huge pages
       reserveHuge(r.nodes, std::max<std::size_t>(4096, 2 * r.nodes.capacity()));
     }
-    const std::size_t first_child = r.nodes.size();
+    const auto first_child = static_cast<std::uint32_t>(r.nodes.size());
     r.nodes[id].first_child = first_child;
     std::size_t begin = node.first_point;
     const std::size_t end = begin + node.count;
@@ -278,26 +292,27 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
       }
       OctreeNode child;
       child.depth = node.depth + 1;
-      child.parent = id;
-      child.first_point = begin;
-      child.count = lo - begin;
-      for (int a = 0; a < 3; ++a) {
-        const double mid = (node.min[a] + node.max[a]) / 2;
-        const bool upper = (c >> a) & 1u;
-        child.min[a] = upper ? mid : node.min[a];
-        child.max[a] = upper ? node.max[a] : mid;
-      }
+      child.parent = static_cast<std::uint32_t>(id);
+      child.first_point = static_cast<std::uint32_t>(begin);
+      child.count = static_cast<std::uint32_t>(lo - begin);
       r.nodes.push_back(child);
       begin = lo;
     }
-    for (unsigned c = 8; c-- > 0;) stack.push_back(first_child + c);
+    for (unsigned c = 8; c-- > 0;) {
+      OctreeBox b;
+      for (int a = 0; a < 3; ++a) {
+        const double mid = (box.min[a] + box.max[a]) / 2;
+        const bool upper = (c >> a) & 1u;
+        b.min[a] = upper ? mid : box.min[a];
+        b.max[a] = upper ? box.max[a] : mid;
+      }
+      stack.push_back({first_child + c, b});
+    }
   }
 
-  // Sums: occupied leaves in Morton order cover the sorted points in one sweep, so the gather
-  // can prefetch ahead across leaves; then children into parents (children follow parents).
-  std::vector<Eigen::Vector3d>& sums = workspace.sums;
-  reserveHuge(sums, r.nodes.size());
-  sums.assign(r.nodes.size(), Eigen::Vector3d::Zero());
+  // Sums, kept in the nodes' mean fields until the means are taken: occupied leaves in Morton
+  // order cover the sorted points in one sweep, so the gather can prefetch ahead across
+  // leaves; then children into parents (children follow parents).
   OctreeStatistics& s = r.stats;
   constexpr std::size_t kAhead = 48;  // prefetch distance, measured (docs/BENCHMARKS.md)
   // Leaf sums in parallel over contiguous runs of leaves (each leaf's sum is its own, in
@@ -308,10 +323,9 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
   parallelRun(sum_threads, [&](unsigned t) {
     const auto [first, last] = chunkOf(leaves, sum_threads, t);
     for (std::size_t j = first; j < last; ++j) {
-      const std::size_t id = r.occupied_leaves[j];
-      const OctreeNode& node = r.nodes[id];
+      OctreeNode& node = r.nodes[r.occupied_leaves[j]];
       double sx = 0.0, sy = 0.0, sz = 0.0;
-      const std::size_t end = node.first_point + node.count;
+      const std::size_t end = std::size_t{node.first_point} + node.count;
       for (std::size_t k = node.first_point; k < end; ++k) {
         if (k + kAhead < n) __builtin_prefetch(points.at(sorter.position(k + kAhead)));
         const float* p = points.at(sorter.position(k));
@@ -319,7 +333,7 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
         sy += p[1];
         sz += p[2];
       }
-      sums[id] = Eigen::Vector3d(sx, sy, sz);
+      node.mean = Eigen::Vector3d(sx, sy, sz);
       leaf_points[t] += node.count;
     }
   });
@@ -328,14 +342,15 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
   // complete when the sweep reaches it (then it is passed on to the parent).
   for (std::size_t id = r.nodes.size(); id-- > 0;) {
     OctreeNode& node = r.nodes[id];
-    s.max_depth = std::max(s.max_depth, node.depth);
+    s.max_depth = std::max<unsigned>(s.max_depth, node.depth);
     if (!node.isLeaf()) {
       ++s.internal_nodes;
     } else if (node.count == 0) {
       ++s.empty_leaves;
     }
-    if (node.count > 0) node.mean = sums[id] / static_cast<double>(node.count);
-    if (id > 0) sums[node.parent] += sums[id];
+    const Eigen::Vector3d sum = node.mean;
+    if (node.count > 0) node.mean = sum / static_cast<double>(node.count);
+    if (id > 0) r.nodes[node.parent].mean += sum;
   }
   s.occupied_leaves = r.occupied_leaves.size();
   s.leaf_nodes = s.occupied_leaves + s.empty_leaves;

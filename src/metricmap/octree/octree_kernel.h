@@ -12,9 +12,13 @@ namespace metricmap {
 
 /// \brief Scratch memory of an octree build, kept between builds.
 struct OctreeWorkspace {
+  /// A node waiting to be split or not, with its bounds (nodes do not store them).
+  struct Pending {
+    std::size_t id;
+    OctreeBox box;
+  };
   KeySorter sorter;
-  std::vector<std::size_t> stack;
-  std::vector<Eigen::Vector3d> sums;
+  std::vector<Pending> stack;
 };
 
 /// \brief Build the adaptive octree of the finite points of `points`.

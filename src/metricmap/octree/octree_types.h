@@ -42,22 +42,28 @@ struct OctreeStatistics {
   std::uint64_t skipped_points = 0;  ///< NaN/Inf points, and points outside a given root box
 };
 
-/// \brief One node. A child's bounds halve its parent's at mid = (lo + hi) / 2, in double; a
-/// point goes to the upper half of an axis iff its coordinate >= the node's midpoint.
+/// \brief One node, 48 bytes. Its bounds are not stored: OctreeResult::bounds(id) computes
+/// them from the root box and the node's path. A child's bounds halve its parent's at
+/// mid = (lo + hi) / 2, in double; a point goes to the upper half of an axis iff its
+/// coordinate >= the node's midpoint.
 struct OctreeNode {
-  static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
-  Eigen::Vector3d min = Eigen::Vector3d::Zero();
-  Eigen::Vector3d max = Eigen::Vector3d::Zero();
-  unsigned depth = 0;
-  std::uint64_t count = 0;                         ///< points inside
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();  ///< their mean (zero when empty)
-  std::size_t first_child = kNone;                 ///< children are first_child .. first_child + 7
-  std::size_t parent = kNone;
-  std::size_t first_point = 0;  ///< its points: point_order[first_point, first_point + count)
+  static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();  ///< mean of its points (zero when empty)
+  std::uint32_t count = 0;                         ///< points inside
+  std::uint32_t first_point = 0;      ///< its points: point_order[first_point, first_point + count)
+  std::uint32_t first_child = kNone;  ///< children are first_child .. first_child + 7
+  std::uint32_t parent = kNone;
+  std::uint32_t depth = 0;  ///< root = 0
 
   bool isLeaf() const { return first_child == kNone; }
   /// \brief Child `octant` (bit 0: upper x, bit 1: upper y, bit 2: upper z).
-  std::size_t child(unsigned octant) const { return first_child + octant; }
+  std::size_t child(unsigned octant) const { return std::size_t{first_child} + octant; }
+};
+
+/// \brief The axis-aligned box of a node.
+struct OctreeBox {
+  Eigen::Vector3d min = Eigen::Vector3d::Zero();
+  Eigen::Vector3d max = Eigen::Vector3d::Zero();
 };
 
 /// \brief Everything an octree build produces. nodes[0] is the root.
@@ -65,7 +71,16 @@ struct OctreeResult {
   std::vector<OctreeNode> nodes;
   std::vector<std::uint32_t> point_order;    ///< input positions, grouped leaf by leaf
   std::vector<std::size_t> occupied_leaves;  ///< node ids in Morton (depth-first) order
+  OctreeBox root;                            ///< the root's bounds
   OctreeStatistics stats;
+
+  /// \brief Bounds of node `id`: the root's, halved along the node's path exactly as the build
+  /// halves them (bit for bit the boxes the split rule saw). O(depth).
+  /// \throws std::out_of_range for an id that is not a node
+  OctreeBox bounds(std::size_t id) const;
+  /// \brief Bounds of every node, in node order, in one pass from the root down (the same
+  /// values as bounds(id)).
+  std::vector<OctreeBox> allBounds() const;
 };
 
 /// \brief Throws std::invalid_argument for a negative or non-finite min cell size or a bad

@@ -15,10 +15,11 @@ OctreeBoxes octreeBoxes(const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& cloud
   OctreeBoxes out;
   out.point_counts.assign(cloud->size(), 0.0);
   const auto& nodes = octree.getNodes();
+  const std::vector<OctreeBox> bounds = octree.getResult().allBounds();
   for (std::size_t id = 0; id < nodes.size(); ++id) {
     const OctreeNode& n = nodes[id];
     if (!n.isLeaf() || (n.count == 0 && !show_empty)) continue;
-    out.boxes.push_back({n.min, n.max, static_cast<double>(n.count)});
+    out.boxes.push_back({bounds[id].min, bounds[id].max, static_cast<double>(n.count)});
     for (int i : octree.getPointIndices(id))
       out.point_counts[static_cast<std::size_t>(i)] = n.count;
   }
