@@ -92,18 +92,20 @@ ScanInsertReport LogOddsMap::insertRaw(const float* xyz, std::size_t stride_byte
   const std::uint64_t per_block =
       2 * sizeof(detail::ScanBlock) + 2 * sizeof(detail::VoxelBlock) + 64;
   in.max_blocks = budget > used ? static_cast<std::size_t>((budget - used) / per_block) : 0;
-  // Beams in contiguous shares, one per thread; the shares' marks united in thread order.
+  // Beams dealt out in turn (thread t casts beams t, t + n, t + 2n, ...): a scan's beams are
+  // ordered by laser and angle, and contiguous shares differ in length by half. The shares'
+  // marks are sets, united in thread order, so the result does not depend on the dealing.
   const unsigned threads = resolveThreads(threads_, in.count, 8192);
   std::vector<detail::RayCastCounts> shares(threads);
   if (thread_scratch_.size() < threads - 1) thread_scratch_.resize(threads - 1);
   parallelRun(threads, [&](unsigned t) {
     detail::RayCastInput part = in;
-    const auto [begin, end] = chunkOf(in.count, threads, t);
     part.xyz = in.xyz == nullptr
                    ? nullptr
                    : reinterpret_cast<const float*>(reinterpret_cast<const unsigned char*>(in.xyz) +
-                                                    begin * in.stride_bytes);
-    part.count = end - begin;
+                                                    t * in.stride_bytes);
+    part.stride_bytes = in.stride_bytes * threads;
+    part.count = in.count > t ? (in.count - t + threads - 1) / threads : 0;
     shares[t] = detail::castRays(part, t == 0 ? scratch_ : thread_scratch_[t - 1]);
   });
   detail::RayCastCounts counts;
@@ -144,7 +146,7 @@ void LogOddsMap::applyScan(ScanInsertReport& report) {
   // The AVX-512 update where the walk is not forced portable (tests compare the two).
   const bool simd = detail::rayPath() == detail::RayPath::Simd;
   const detail::LogOddsStep step{hit_, miss_, clamp_min_, clamp_max_};
-  const unsigned threads = resolveThreads(threads_, count, 2048);
+  const unsigned threads = resolveThreads(threads_, count, 256);
   std::vector<detail::BlockUpdateCounts> counts(threads);
   parallelRun(threads, [&](unsigned t) {
     const auto [begin, end] = chunkOf(count, threads, t);

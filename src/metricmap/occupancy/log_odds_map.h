@@ -45,9 +45,10 @@ struct LogOddsMemory {
 /// every voxel on a beam between the sensor's voxel and the endpoint's is a miss, the
 /// endpoint's voxel a hit; a beam longer than max_range is cut there and marks no hit; within
 /// one scan each voxel is updated once and a hit wins over a miss. Log-odds are float, clamped.
-/// An insert may cast its beams on several threads (setThreads): each casts a share of the
-/// points, the shares' voxel sets are united, and the map is updated once, in block-key order —
-/// the same map, in the same order, for every thread count.
+/// An insert may cast its beams on several threads (setThreads): of n threads, thread t casts
+/// points t, t + n, t + 2n, ... (a share of every part of the scan); the shares' voxel sets are
+/// united and the map is updated once, in block-key order — the same map, in the same order,
+/// for every thread count.
 /// \note Thread safety: const members may run concurrently; inserts need exclusive access.
 class LogOddsMap {
  public:
