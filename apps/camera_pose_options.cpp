@@ -79,7 +79,7 @@ HeightMapPoses resolveCameraPoses(const CameraPoseOptions& o, std::size_t frames
     poses.fixed = cameraToMap(o.camera_height, o.pitch_deg * kDeg, o.yaw_deg * kDeg);
   if (!o.trajectory.empty()) {
     poses.trajectory = readTumTrajectory(o.trajectory, frames);
-    requireNoExtraPoses(o.trajectory, frames);
+    requireNoExtraPoses(o.trajectory, frames, "depth image");
   }
   return poses;
 }

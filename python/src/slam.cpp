@@ -3,8 +3,10 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <pybind11/stl.h>
@@ -13,6 +15,7 @@
 #include "arrays.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/slam/slam_2d.h"
+#include "metricmap/slam/slam_2d_run.h"
 #include "posegraph.h"
 #include "poses.h"
 #include "sequence.h"
@@ -360,25 +363,15 @@ lower-left corner, m), mode.
         Slam2DConfig c = config ? *config : Slam2DConfig{};
         if (!loop_closure)
           c.loop_every_n_nodes = c.wide_every_n_nodes = static_cast<std::size_t>(-1);
-        std::unique_ptr<PySlam> p = makeSlam(c, planar(info.sensor_to_base));
+        auto p = std::make_unique<PySlam>();
         {
           py::gil_scoped_release release;
           std::lock_guard<std::mutex> lock(s.mutex);
-          for (std::size_t k : f) {
-            Scan scan = s.source->scan(k);
-            if (!scan.laser) throw InputError(scan.name + ": not a 2D laser scan");
-            std::optional<Pose2D> odometry;
-            if (scan.odometry) odometry = planar(*scan.odometry);
-            try {
-              p->slam->addScan(*scan.laser, odometry, scan.stamp);
-            } catch (const CapacityError& e) {
-              throw CapacityError(scan.name + ": " + e.what());
-            }
-            p->stamps.push_back(scan.stamp);
-          }
-          p->slam->finish();
-          p->finished = true;
+          Slam2DRun run = runSlam2D(*s.source, f, c, info.path);
+          p->slam = std::move(run.slam);
+          p->stamps = std::move(run.scan_stamps);
         }
+        p->finished = true;
         return p;
       },
       py::arg("source"), py::arg("frames") = py::none(), py::arg("config") = py::none(),

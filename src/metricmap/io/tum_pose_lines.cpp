@@ -7,7 +7,7 @@
 
 namespace metricmap {
 
-void requireNoExtraPoses(const std::string& path, std::size_t frames) {
+void requireNoExtraPoses(const std::string& path, std::size_t frames, const std::string& noun) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open");
   std::vector<char> block(1 << 16);
@@ -16,9 +16,10 @@ void requireNoExtraPoses(const std::string& path, std::size_t frames) {
   const auto endLine = [&] {
     if (content && ++poses > frames) {
       throw InputError(path + ": line " + std::to_string(line) + " is a pose line beyond the " +
-                       std::to_string(frames) +
-                       " depth image(s) given: frame k takes the k-th pose line, so the "
-                       "trajectory must hold one line per image, in order");
+                       std::to_string(frames) + " " + noun +
+                       "(s) given: frame k takes the k-th pose line, so the trajectory must "
+                       "hold one line per " +
+                       noun + ", in order");
     }
     ++line;
     column = 0;

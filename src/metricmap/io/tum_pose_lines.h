@@ -12,7 +12,9 @@ namespace metricmap {
 /// mean the frames are not the trajectory's first ones, or not in its order) is an error naming
 /// the file and that line. Blank lines and '#' comments are not pose lines. The file is scanned
 /// in blocks (a line may be as long as the file).
+/// \param noun what a frame is, singular ("depth image", "scan"): the message says
+/// "the 2 depth image(s) given", "one line per depth image"
 /// \throws InputError naming the file (and the first extra pose line)
-void requireNoExtraPoses(const std::string& path, std::size_t frames);
+void requireNoExtraPoses(const std::string& path, std::size_t frames, const std::string& noun);
 
 }  // namespace metricmap

@@ -34,7 +34,7 @@ Slam2DRun runSlam2D(ScanSource& source, const std::vector<std::size_t>& frames,
     } catch (const std::invalid_argument& e) {  // odometry beyond reach: name the scan
       throw InputError(scan.name + ": " + e.what());
     }
-    trajectory.stamps.push_back(scan.stamp);
+    run.scan_stamps.push_back(scan.stamp);
     if (progress) progress(k + 1, frames.size(), slam);
   }
   try {
@@ -43,9 +43,9 @@ Slam2DRun runSlam2D(ScanSource& source, const std::vector<std::size_t>& frames,
     throw CapacityError(name + ": " + e.what());
   }
   for (const Pose2D& p : slam.trajectory()) trajectory.poses.push_back(spatialPose(p));
-  if (!std::all_of(trajectory.stamps.begin(), trajectory.stamps.end(),
-                   [](double s) { return std::isfinite(s); }))
-    trajectory.stamps.clear();
+  if (std::all_of(run.scan_stamps.begin(), run.scan_stamps.end(),
+                  [](double s) { return std::isfinite(s); }))
+    trajectory.stamps = run.scan_stamps;
   return run;
 }
 

@@ -24,6 +24,8 @@ struct Slam2DRun {
   std::unique_ptr<Slam2D> slam;
   /// \brief The optimised pose of every scan with its stamp; no stamps when any scan has none.
   Trajectory trajectory;
+  /// \brief Every scan's stamp as read, in order (NaN where a scan has none).
+  std::vector<double> scan_stamps;
   double read_seconds = 0.0;  ///< reading the scans from the source
 };
 

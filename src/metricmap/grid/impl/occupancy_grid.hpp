@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <tuple>
-#include <type_traits>
 
 #include <pcl/point_types.h>
 #include <stdexcept>
 
 #include "metricmap/detail/huge_pages.h"
 #include "metricmap/detail/point_span_pcl.h"
+#include "metricmap/grid/cell_means.h"
 #include "metricmap/grid/grid_kernel.h"
 #include "metricmap/grid/occupancy_grid.h"
 
@@ -41,19 +41,8 @@ Eigen::Vector3d OccupancyGrid<PointT>::getCellMin(const std::array<std::int64_t,
 template <typename PointT>
 void OccupancyGrid<PointT>::applyFilter(PointCloud& output) {
   compute();
-  const std::vector<GridCell>& cells = result_.cells;
-  reserveHuge(output.points, cells.size());
-  output.resize(cells.size());
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    PointT& p = output[i];
-    if constexpr (!std::is_same_v<PointT, pcl::PointXYZ>) p = (*input_)[cells[i].first_point];
-    p.x = static_cast<float>(cells[i].mean.x());
-    p.y = static_cast<float>(cells[i].mean.y());
-    p.z = static_cast<float>(cells[i].mean.z());
-  }
-  output.width = static_cast<std::uint32_t>(output.size());
-  output.height = 1;
-  output.is_dense = true;
+  reserveHuge(output.points, result_.cells.size());
+  fillCellMeans(result_.cells, input_.get(), output);
 }
 
 }  // namespace metricmap
