@@ -22,4 +22,10 @@ void adviseHugePages(const void* p, std::size_t bytes) {
 #endif
 }
 
+void touchPages(void* p, std::size_t bytes) {
+  constexpr std::size_t kPage = 4096;
+  auto* bytes_at = static_cast<volatile unsigned char*>(p);
+  for (std::size_t i = 0; i < bytes; i += kPage) bytes_at[i] = 0;
+}
+
 }  // namespace metricmap

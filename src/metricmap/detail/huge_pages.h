@@ -15,6 +15,10 @@ namespace metricmap {
 /// small buffers and where the call does not exist. Never fails: it is only advice.
 void adviseHugePages(const void* p, std::size_t bytes);
 
+/// \brief Write one byte of every 4 KiB page of [p, p + bytes) (allocated, not yet holding
+/// objects), so that the calling thread takes the page faults.
+void touchPages(void* p, std::size_t bytes);
+
 /// \brief reserve(n), then the advice on the whole capacity.
 template <typename T, typename A>
 void reserveHuge(std::vector<T, A>& v, std::size_t n) {

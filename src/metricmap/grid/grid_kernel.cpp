@@ -133,9 +133,11 @@ void worldKeysFast(const PointSpan& points, std::size_t begin, std::size_t end, 
 #endif
 }
 
-/// Cells of the sorted keys [begin, end) (which start and end at key changes), appended.
+/// Cells of the sorted keys [begin, end) (which start and end at key changes), in order, each
+/// passed to `emit`.
+template <typename Emit>
 void accumulateCells(const PointSpan& points, const KeySorter& sorter, const GridLayout& L,
-                     std::size_t begin_at, std::size_t end_at, std::vector<GridCell>& cells) {
+                     std::size_t begin_at, std::size_t end_at, Emit&& emit) {
   const std::uint64_t nx = L.dims[0], nxy = L.dims[0] * L.dims[1];
   const std::size_t n = sorter.size();
   constexpr std::size_t kAhead = 48;  // prefetch distance, measured (docs/NOTES.md)
@@ -166,7 +168,7 @@ void accumulateCells(const PointSpan& points, const KeySorter& sorter, const Gri
     c.count = end - begin;
     c.mean = Eigen::Vector3d(sx, sy, sz) / static_cast<double>(c.count);
     c.first_point = points.sourceIndex(sorter.position(begin));
-    cells.push_back(c);
+    emit(c);
     begin = end;
   }
 }
@@ -251,21 +253,24 @@ void buildGrid(const PointSpan& points, const GridParams& params, GridWorkspace&
   }
   std::vector<std::size_t> runs(threads);
   parallelRun(threads, [&](unsigned t) { runs[t] = countRuns(sorter, cuts[t], cuts[t + 1]); });
-  std::size_t total_runs = 0;
-  for (std::size_t r : runs) total_runs += r;
+  std::vector<std::size_t> first_cell(threads + 1, 0);
+  for (unsigned t = 0; t < threads; ++t) first_cell[t + 1] = first_cell[t] + runs[t];
+  const std::size_t total_runs = first_cell[threads];
   reserveHuge(result.cells, total_runs);
-  std::vector<std::vector<GridCell>>& parts = workspace.parts;
-  if (parts.size() < threads - 1) parts.resize(threads - 1);
-  parallelRun(threads, [&](unsigned t) {
-    std::vector<GridCell>& out = t == 0 ? result.cells : parts[t - 1];
-    if (t > 0) {
-      out.clear();
-      reserveHuge(out, runs[t]);
-    }
-    accumulateCells(points, sorter, L, cuts[t], cuts[t + 1], out);
-  });
-  for (unsigned t = 1; t < threads; ++t) {
-    result.cells.insert(result.cells.end(), parts[t - 1].begin(), parts[t - 1].end());
+  if (threads == 1) {
+    accumulateCells(points, sorter, L, 0, n, [&](const GridCell& c) { result.cells.push_back(c); });
+  } else {
+    // Each thread writes its cells in place. Fresh pages are costly, so each first faults in
+    // the pages it will write, beside the others, before the one (serial) resize.
+    parallelRun(threads, [&](unsigned t) {
+      touchPages(result.cells.data() + first_cell[t], runs[t] * sizeof(GridCell));
+    });
+    result.cells.resize(total_runs);
+    parallelRun(threads, [&](unsigned t) {
+      GridCell* out = result.cells.data() + first_cell[t];
+      accumulateCells(points, sorter, L, cuts[t], cuts[t + 1],
+                      [&out](const GridCell& c) { *out++ = c; });
+    });
   }
   GridStatistics& s = result.stats;
   s.points = bounds.finite;

@@ -11,9 +11,6 @@ namespace metricmap {
 /// \brief Scratch memory of a grid build, kept between builds (fresh pages are costly).
 struct GridWorkspace {
   KeySorter sorter;
-  /// Cells of the ranges of threads 1..n-1 before they join the result (kept, so that a reused
-  /// object does not fault in fresh pages for them on every build).
-  std::vector<std::vector<GridCell>> parts;
 };
 
 /// \brief Bin the finite points of `points` into cells; NaN/Inf points are skipped and counted.
