@@ -16,6 +16,7 @@
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/mapping/occupancy_map_2d.h"
 #include "metricmap/registration/scan_registration.h"
+#include "scratch_files.h"
 #include "test_data.h"
 
 namespace metricmap {
@@ -24,10 +25,10 @@ namespace {
 using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 const KittiSequence kSeq{dataPath("kitti_odometry_00"), "00"};
 
+/// Files in a directory of this process, removed when it exits.
 std::string writeTemp(const std::string& name, const std::string& text) {
-  const auto p = std::filesystem::temp_directory_path() / ("metricmap_kitti_" + name);
-  std::ofstream(p) << text;
-  return p.string();
+  static const test_support::ScratchDir dir("metricmap_kitti_");
+  return dir.write(name, text);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/occupancy/octomap_io.h"
 #include "occupancy_scans.h"
+#include "scratch_files.h"
 
 namespace metricmap {
 namespace {
@@ -21,9 +22,8 @@ namespace fs = std::filesystem;
 constexpr std::int64_t kOcto = 32768;
 
 fs::path tempDir() {
-  const fs::path d = fs::temp_directory_path() / "metricmap_octomap_io";
-  fs::create_directories(d);
-  return d;
+  static const metricmap::test_support::ScratchDir dir("metricmap_octomap_io_");  // removed at exit
+  return dir.path;
 }
 
 std::string slurp(const std::string& path) {

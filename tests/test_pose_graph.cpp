@@ -23,6 +23,7 @@
 #include "metricmap/posegraph/g2o_io.h"
 #include "metricmap/posegraph/optimize.h"
 #include "metricmap/posegraph/pose_graph.h"
+#include "scratch_files.h"
 
 namespace {
 
@@ -50,13 +51,8 @@ std::string sharedG2o(const std::string& name) {
 
 /// A fresh directory for this process's files.
 fs::path scratchDir() {
-  static const fs::path dir = [] {
-    fs::path d = fs::temp_directory_path() /
-                 ("metricmap_pose_graph_" + std::to_string(static_cast<long>(::getpid())));
-    fs::create_directories(d);
-    return d;
-  }();
-  return dir;
+  static const metricmap::test_support::ScratchDir dir("metricmap_pose_graph_");  // removed at exit
+  return dir.path;
 }
 
 std::string writeScratch(const std::string& name, const std::string& text) {

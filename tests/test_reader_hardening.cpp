@@ -61,6 +61,7 @@ TEST(ReaderHardening, PlyAndPcdLayoutsPclCannotTake) {
   fs::create_directories(dir);
   EXPECT_NE(inputErrorOf([&] { loadCloud(dir.string(), cloud); }).find("not a regular file"),
             std::string::npos);
+  fs::remove(dir);
   // hex and beyond-float values in an ascii body are not numbers PCL reads as we do
   const std::string hdr =
       "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1\nHEIGHT 1\n"
