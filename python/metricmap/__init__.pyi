@@ -257,6 +257,7 @@ class Slam2DConfig:
     node_max_time: float
     local_linear_window: float
     local_angular_window_deg: float
+    local_angular_window_per_turn: float
     translation_weight: float
     rotation_weight: float
     refine_iterations: int

@@ -122,6 +122,8 @@ parameters are the ``map_*`` attributes.
         "m: local correlative search half-width.");
   field(c, "local_angular_window_deg", &Slam2DConfig::local_angular_window_deg,
         "deg: local correlative search half-width.");
+  field(c, "local_angular_window_per_turn", &Slam2DConfig::local_angular_window_per_turn,
+        "share of the predicted turn added to the local angular half-width.");
   field(c, "translation_weight", &Slam2DConfig::translation_weight, "Gauss-Newton prior.");
   field(c, "rotation_weight", &Slam2DConfig::rotation_weight, "Gauss-Newton prior.");
   field(c, "refine_iterations", &Slam2DConfig::refine_iterations, "Gauss-Newton steps.");

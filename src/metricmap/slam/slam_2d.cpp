@@ -84,6 +84,9 @@ void validateSlam2DConfig(const Slam2DConfig& c) {
   need(std::isfinite(c.local_angular_window_deg) && c.local_angular_window_deg >= 0 &&
            c.local_angular_window_deg <= 180,
        "local_angular_window_deg must be in [0, 180]");
+  need(std::isfinite(c.local_angular_window_per_turn) && c.local_angular_window_per_turn >= 0 &&
+           c.local_angular_window_per_turn <= 10,
+       "local_angular_window_per_turn must be in [0, 10]");
   need(std::isfinite(c.translation_weight) && c.translation_weight >= 0,
        "translation_weight must be >= 0");
   need(std::isfinite(c.rotation_weight) && c.rotation_weight >= 0, "rotation_weight must be >= 0");
@@ -158,7 +161,10 @@ struct Slam2D::Impl {
   std::vector<std::size_t> scan_node;   ///< per scan: the last node at or before it
   std::vector<std::size_t> node_scans;  ///< per node
   std::vector<LoopClosure2D> loops;
-  std::optional<Pose2D> last_odometry;
+  std::optional<Pose2D> last_odometry;  ///< the last odometry reading that changed
+  Pose2D odometry_origin;          ///< the estimated pose at the scan where that reading first came
+  Pose2D last_motion;              ///< estimated motion between the last two scans
+  bool odometry_repeated = false;  ///< a scan after that one came with the same reading
   double last_node_stamp = 0.0;
   std::size_t last_loop_node = 0;
   std::size_t nodes_at_last_optimization = 0;
@@ -315,6 +321,37 @@ struct Slam2D::Impl {
     stats.loop_seconds += since(t0);
   }
 
+  /// The poses a new scan is matched from, the prediction first. The prediction is the last
+  /// pose moved by the odometry's motion since the last scan. A reading repeated while the
+  /// robot moves is a stalled odometry that jumps by the whole motion when it resumes (the raw
+  /// MIT CSAIL log stalls for 0.8 s at a time): the first fresh reading after a repeated one
+  /// moves the pose of the scan where the repeated reading first came, and while a reading
+  /// repeats, the scan is also matched at the last scan's motion (the better match wins).
+  std::vector<Pose2D> predictions(const std::optional<Pose2D>& odometry, bool fresh) const {
+    if (local.empty()) return {odometry ? *odometry : Pose2D{}};
+    if (!odometry || !last_odometry) return {local.back()};
+    if (!fresh) return {local.back(), compose(local.back(), last_motion)};
+    const Pose2D step = compose(inverse(*last_odometry), *odometry);
+    return {compose(odometry_repeated ? odometry_origin : local.back(), step)};
+  }
+
+  /// A scan matched against the older active submap from `from`: the correlative search in
+  /// the local window, whose angular half-width grows with the turn `from` makes since the
+  /// last scan (odometry's heading error grows with the turn), then Gauss-Newton.
+  ScanMatch2D matchLocal(const std::vector<Eigen::Vector2f>& points, const Pose2D& from) const {
+    const Slam2DConfig& c = config;
+    const MatchGrid grid(*submaps[active.front()].grid, table);
+    const double turned =
+        local.empty() ? 0.0 : std::fabs(std::remainder(from.theta - local.back().theta, 2 * kPi));
+    const double window =
+        c.local_angular_window_deg * kPi / 180.0 + c.local_angular_window_per_turn * turned;
+    const ScanMatch2D coarse =
+        correlativeSearch(grid, points, from, c.local_linear_window, std::min(window, kPi),
+                          angularSearchStep(c.resolution, points));
+    return refinePose(grid, points, coarse.pose, coarse.pose, c.translation_weight,
+                      c.rotation_weight, c.refine_iterations, c.bicubic);
+  }
+
   void insertNode(std::size_t n) {
     const auto t0 = Clock::now();
     const Node& node = nodes[n];
@@ -385,15 +422,11 @@ void Slam2D::addScan(const LaserScan& scan, const std::optional<Pose2D>& odometr
   }
   node.points = voxelFilter(node.ends, c.voxel_filter);
 
-  // Prediction: the odometry's motion since the last scan (or none).
-  Pose2D predicted;
-  if (d.local.empty()) {
-    predicted = odometry ? *odometry : Pose2D{};
-  } else {
-    predicted = d.local.back();
-    if (odometry && d.last_odometry)
-      predicted = compose(predicted, compose(inverse(*d.last_odometry), *odometry));
-  }
+  const bool fresh_odometry =
+      odometry && (!d.last_odometry || odometry->x != d.last_odometry->x ||
+                   odometry->y != d.last_odometry->y || odometry->theta != d.last_odometry->theta);
+  const std::vector<Pose2D> hypotheses = d.predictions(odometry, fresh_odometry);
+  const Pose2D& predicted = hypotheses.front();
   // A prediction beyond the grids' reach (2^30 cells of the finest resolution, and
   // well inside what the cell arithmetic holds) is refused before anything changes.
   const double reach = 1e6;
@@ -405,19 +438,29 @@ void Slam2D::addScan(const LaserScan& scan, const std::optional<Pose2D>& odometr
                   predicted.x, predicted.y);
     throw std::invalid_argument(msg);
   }
-  if (odometry) d.last_odometry = odometry;
 
   Pose2D pose = predicted;
   if (!d.active.empty() && !node.points.empty()) {
-    const MatchGrid grid(*d.submaps[d.active.front()].grid, d.table);
-    const double step = angularSearchStep(c.resolution, node.points);
-    const ScanMatch2D coarse =
-        correlativeSearch(grid, node.points, predicted, c.local_linear_window,
-                          c.local_angular_window_deg * kPi / 180.0, step);
-    pose = refinePose(grid, node.points, coarse.pose, coarse.pose, c.translation_weight,
-                      c.rotation_weight, c.refine_iterations, c.bicubic)
-               .pose;
+    // Hypotheses within the search window of the first one add nothing.
+    const double lw = c.local_linear_window, aw = c.local_angular_window_deg * kPi / 180.0;
+    ScanMatch2D best = d.matchLocal(node.points, predicted);
+    for (std::size_t h = 1; h < hypotheses.size(); ++h) {
+      const Pose2D delta = compose(inverse(predicted), hypotheses[h]);
+      if (std::fabs(delta.x) <= lw && std::fabs(delta.y) <= lw && std::fabs(delta.theta) <= aw)
+        continue;
+      const ScanMatch2D other = d.matchLocal(node.points, hypotheses[h]);
+      if (other.score > best.score) best = other;
+    }
+    pose = best.pose;
   }
+  if (fresh_odometry) {
+    d.last_odometry = odometry;
+    d.odometry_origin = pose;
+    d.odometry_repeated = false;
+  } else if (odometry) {
+    d.odometry_repeated = true;
+  }
+  d.last_motion = d.local.empty() ? Pose2D{} : compose(inverse(d.local.back()), pose);
   d.local.push_back(pose);
   d.stats.scans++;
   d.stats.local_seconds += since(t0);

@@ -32,9 +32,12 @@ struct Slam2DConfig {
   // --- local matching (scan to the active submap)
   double local_linear_window = 0.1;       ///< correlative search half-width (m, >= 0)
   double local_angular_window_deg = 1.0;  ///< correlative search half-width (deg, >= 0)
-  double translation_weight = 1.0;        ///< Gauss-Newton prior on the search's translation
-  double rotation_weight = 1.0;           ///< Gauss-Newton prior on the search's heading
-  int refine_iterations = 10;             ///< Gauss-Newton steps (>= 1)
+  /// ... plus this share of the turn the prediction makes since the last scan ([0, 10]; 0.2:
+  /// a 20° turn searches ±5°): odometry's heading error grows with the turn.
+  double local_angular_window_per_turn = 0.2;
+  double translation_weight = 1.0;  ///< Gauss-Newton prior on the search's translation
+  double rotation_weight = 1.0;     ///< Gauss-Newton prior on the search's heading
+  int refine_iterations = 10;       ///< Gauss-Newton steps (>= 1)
   /// Gauss-Newton on the bicubic surface (Cartographer's) instead of the bilinear one. Off by
   /// default: on the Intel log it gave a sharper local-only map but a worse trajectory after
   /// loop closure with the defaults below, which were tuned on the bilinear surface.

@@ -37,6 +37,7 @@ const std::vector<Entry>& entries() {
       {"node_max_time", &C::node_max_time},
       {"local_linear_window", &C::local_linear_window},
       {"local_angular_window_deg", &C::local_angular_window_deg},
+      {"local_angular_window_per_turn", &C::local_angular_window_per_turn},
       {"translation_weight", &C::translation_weight},
       {"rotation_weight", &C::rotation_weight},
       {"refine_iterations", &C::refine_iterations},
