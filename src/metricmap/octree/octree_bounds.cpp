@@ -16,17 +16,7 @@ OctreeBox OctreeResult::bounds(std::size_t id) const {
     at = parent;
   }
   OctreeBox box = root;
-  while (depth-- > 0) {
-    const unsigned octant = path[depth];
-    for (int a = 0; a < 3; ++a) {
-      const double mid = (box.min[a] + box.max[a]) / 2;
-      if ((octant >> a) & 1u) {
-        box.min[a] = mid;
-      } else {
-        box.max[a] = mid;
-      }
-    }
-  }
+  while (depth-- > 0) box = childBox(box, path[depth]);
   return box;
 }
 
@@ -36,16 +26,7 @@ std::vector<OctreeBox> OctreeResult::allBounds() const {
   boxes[0] = root;
   for (std::size_t id = 0; id < nodes.size(); ++id) {  // children follow their parents
     if (nodes[id].isLeaf()) continue;
-    const OctreeBox& box = boxes[id];
-    for (unsigned c = 0; c < 8; ++c) {
-      OctreeBox& b = boxes[nodes[id].child(c)];
-      for (int a = 0; a < 3; ++a) {
-        const double mid = (box.min[a] + box.max[a]) / 2;
-        const bool upper = (c >> a) & 1u;
-        b.min[a] = upper ? mid : box.min[a];
-        b.max[a] = upper ? box.max[a] : mid;
-      }
-    }
+    for (unsigned c = 0; c < 8; ++c) boxes[nodes[id].child(c)] = childBox(boxes[id], c);
   }
   return boxes;
 }

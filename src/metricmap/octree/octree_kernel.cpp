@@ -298,16 +298,7 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
       r.nodes.push_back(child);
       begin = lo;
     }
-    for (unsigned c = 8; c-- > 0;) {
-      OctreeBox b;
-      for (int a = 0; a < 3; ++a) {
-        const double mid = (box.min[a] + box.max[a]) / 2;
-        const bool upper = (c >> a) & 1u;
-        b.min[a] = upper ? mid : box.min[a];
-        b.max[a] = upper ? box.max[a] : mid;
-      }
-      stack.push_back({first_child + c, b});
-    }
+    for (unsigned c = 8; c-- > 0;) stack.push_back({first_child + c, childBox(box, c)});
   }
 
   // Sums, kept in the nodes' mean fields until the means are taken: occupied leaves in Morton

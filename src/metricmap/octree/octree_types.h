@@ -66,6 +66,19 @@ struct OctreeBox {
   Eigen::Vector3d max = Eigen::Vector3d::Zero();
 };
 
+/// \brief The box of child `octant` (bit a set: the upper half along axis a): the halving the
+/// build uses, mid = (min + max) / 2 in double, so that every node's box is reproduced exactly.
+inline OctreeBox childBox(const OctreeBox& box, unsigned octant) {
+  OctreeBox b;
+  for (int a = 0; a < 3; ++a) {
+    const double mid = (box.min[a] + box.max[a]) / 2;
+    const bool upper = (octant >> a) & 1u;
+    b.min[a] = upper ? mid : box.min[a];
+    b.max[a] = upper ? box.max[a] : mid;
+  }
+  return b;
+}
+
 /// \brief Everything an octree build produces. nodes[0] is the root.
 struct OctreeResult {
   std::vector<OctreeNode> nodes;
