@@ -398,7 +398,12 @@ Slam2D
 Raises
 ------
 InputError
-    not a planar source, or a scan that cannot be read.
+    not a planar source, a scan that cannot be read or is not a 2D laser scan, or odometry
+    the SLAM refuses (not finite, or beyond +-1e6 m); the message names the scan.
+CapacityError
+    the maps outgrow the memory budget.
+ValueError
+    a frame out of range, or frames not strictly increasing.
 )doc");
 }
 
