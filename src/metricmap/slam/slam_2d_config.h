@@ -39,8 +39,8 @@ struct Slam2DConfig {
   double rotation_weight = 1.0;     ///< Gauss-Newton prior on the search's heading
   int refine_iterations = 10;       ///< Gauss-Newton steps (>= 1)
   /// Gauss-Newton on the bicubic surface (Cartographer's) instead of the bilinear one. Off by
-  /// default: on the Intel log it gave a sharper local-only map but a worse trajectory after
-  /// loop closure with the defaults below, which were tuned on the bilinear surface.
+  /// default: over ten runs of the Intel log it stays within the bilinear surface's spread, and
+  /// with Cartographer's prior weights it bends FR079's corridor (docs/SLAM.md).
   bool bicubic = false;
 
   // --- loop closure (branch-and-bound against finished submaps)
