@@ -258,6 +258,9 @@ class Slam2DConfig:
     local_linear_window: float
     local_angular_window_deg: float
     local_angular_window_per_turn: float
+    weak_direction_min_gain: float
+    weak_direction_information: float
+    weak_direction_weight: float
     translation_weight: float
     rotation_weight: float
     refine_iterations: int

@@ -124,6 +124,12 @@ parameters are the ``map_*`` attributes.
         "deg: local correlative search half-width.");
   field(c, "local_angular_window_per_turn", &Slam2DConfig::local_angular_window_per_turn,
         "share of the predicted turn added to the local angular half-width.");
+  field(c, "weak_direction_min_gain", &Slam2DConfig::weak_direction_min_gain,
+        "score gain over the prediction below which weak directions keep the prediction.");
+  field(c, "weak_direction_information", &Slam2DConfig::weak_direction_information,
+        "information (per cell squared) below which a translation direction is weak.");
+  field(c, "weak_direction_weight", &Slam2DConfig::weak_direction_weight,
+        "Gauss-Newton prior toward the prediction along weak directions (0: off).");
   field(c, "translation_weight", &Slam2DConfig::translation_weight, "Gauss-Newton prior.");
   field(c, "rotation_weight", &Slam2DConfig::rotation_weight, "Gauss-Newton prior.");
   field(c, "refine_iterations", &Slam2DConfig::refine_iterations, "Gauss-Newton steps.");

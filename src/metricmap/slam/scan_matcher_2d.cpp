@@ -77,7 +77,8 @@ ScanMatch2D correlativeSearch(const MatchGrid& grid, const std::vector<Eigen::Ve
 
 ScanMatch2D refinePose(const MatchGrid& grid, const std::vector<Eigen::Vector2f>& points,
                        const Pose2D& initial, const Pose2D& prior, double translation_weight,
-                       double rotation_weight, int iterations, bool cubic) {
+                       double rotation_weight, int iterations, bool cubic,
+                       const WeakDirectionPrior* weak) {
   Pose2D x = initial;
   if (!points.empty()) {
     const double w_occ = 1.0 / std::sqrt(static_cast<double>(points.size()));
@@ -98,6 +99,17 @@ ScanMatch2D refinePose(const MatchGrid& grid, const std::vector<Eigen::Vector2f>
                                 -(gx * (-s * px - c * py) + gy * (c * px - s * py)) * w_occ);
         h += j * j.transpose();
         g += j * r;
+      }
+      if (weak) {  // the data term's weak translation directions, at this iterate
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(h.topLeftCorner<2, 2>());
+        const Eigen::Vector2d away(x.x - weak->target.x(), x.y - weak->target.y());
+        for (int k = 0; k < 2; ++k) {
+          if (es.eigenvalues()(k) >= weak->min_information) continue;
+          const Eigen::Vector2d v = es.eigenvectors().col(k);
+          const Eigen::Matrix2d p = weak->weight * weak->weight * v * v.transpose();
+          h.topLeftCorner<2, 2>() += p;
+          g.head<2>() += p * away;
+        }
       }
       double dtheta = x.theta - prior.theta;
       dtheta = std::remainder(dtheta, 2.0 * kPi);

@@ -37,12 +37,24 @@ ScanMatch2D correlativeSearch(const MatchGrid& grid, const std::vector<Eigen::Ve
                               const Pose2D& initial, double linear_window, double angular_window,
                               double angular_step);
 
+/// \brief A prior on the translation along the directions the scan hardly constrains: those
+/// where the data term's information (the eigenvalues of its translation block, per m²) is
+/// below `min_information`. In a corridor, the scan's points barely change their cells'
+/// probabilities as the scan slides along it, while the edge of what the grid has seen pulls
+/// it back: this prior holds the scan where `target` (the odometry's prediction) puts it.
+struct WeakDirectionPrior {
+  Eigen::Vector2d target = Eigen::Vector2d::Zero();
+  double weight = 0.0;           ///< like translation_weight, along the weak directions only
+  double min_information = 0.0;  ///< per m²
+};
+
 /// \brief Gauss-Newton from `initial` (at most `iterations` steps, stopping when a step moves
 /// less than 1e-6 m and rad), with the prior `prior` weighted by translation_weight and
-/// rotation_weight, on the bicubic surface (`cubic`) or the bilinear one. The score is the
-/// nearest-cell score at the result.
+/// rotation_weight (and `weak`, when given), on the bicubic surface (`cubic`) or the bilinear
+/// one. The score is the nearest-cell score at the result.
 ScanMatch2D refinePose(const MatchGrid& grid, const std::vector<Eigen::Vector2f>& points,
                        const Pose2D& initial, const Pose2D& prior, double translation_weight,
-                       double rotation_weight, int iterations, bool cubic = false);
+                       double rotation_weight, int iterations, bool cubic = false,
+                       const WeakDirectionPrior* weak = nullptr);
 
 }  // namespace metricmap

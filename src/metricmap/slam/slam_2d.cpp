@@ -87,6 +87,15 @@ void validateSlam2DConfig(const Slam2DConfig& c) {
   need(std::isfinite(c.local_angular_window_per_turn) && c.local_angular_window_per_turn >= 0 &&
            c.local_angular_window_per_turn <= 10,
        "local_angular_window_per_turn must be in [0, 10]");
+  need(std::isfinite(c.weak_direction_min_gain) && c.weak_direction_min_gain >= 0 &&
+           c.weak_direction_min_gain <= 1,
+       "weak_direction_min_gain must be in [0, 1]");
+  need(std::isfinite(c.weak_direction_information) && c.weak_direction_information >= 0 &&
+           c.weak_direction_information <= 1e6,
+       "weak_direction_information must be in [0, 1e6]");
+  need(std::isfinite(c.weak_direction_weight) && c.weak_direction_weight >= 0 &&
+           c.weak_direction_weight <= 1e6,
+       "weak_direction_weight must be in [0, 1e6]");
   need(std::isfinite(c.translation_weight) && c.translation_weight >= 0,
        "translation_weight must be >= 0");
   need(std::isfinite(c.rotation_weight) && c.rotation_weight >= 0, "rotation_weight must be >= 0");
@@ -348,8 +357,21 @@ struct Slam2D::Impl {
     const ScanMatch2D coarse =
         correlativeSearch(grid, points, from, c.local_linear_window, std::min(window, kPi),
                           angularSearchStep(c.resolution, points));
-    return refinePose(grid, points, coarse.pose, coarse.pose, c.translation_weight,
-                      c.rotation_weight, c.refine_iterations, c.bicubic);
+    ScanMatch2D match = refinePose(grid, points, coarse.pose, coarse.pose, c.translation_weight,
+                                   c.rotation_weight, c.refine_iterations, c.bicubic);
+    // A scan that hardly prefers where it matched over where the prediction puts it (at the
+    // match's heading) keeps the prediction along the directions it does not constrain.
+    Pose2D at_prediction = match.pose;
+    at_prediction.x = from.x;
+    at_prediction.y = from.y;
+    if (c.weak_direction_weight > 0 &&
+        match.score - scoreAt(grid, points, at_prediction) < c.weak_direction_min_gain) {
+      const WeakDirectionPrior weak{Eigen::Vector2d(from.x, from.y), c.weak_direction_weight,
+                                    c.weak_direction_information / (c.resolution * c.resolution)};
+      match = refinePose(grid, points, match.pose, coarse.pose, c.translation_weight,
+                         c.rotation_weight, c.refine_iterations, c.bicubic, &weak);
+    }
+    return match;
   }
 
   void insertNode(std::size_t n) {
