@@ -347,7 +347,8 @@ struct Slam2D::Impl {
   /// A scan matched against the older active submap from `from`: the correlative search in
   /// the local window, whose angular half-width grows with the turn `from` makes since the
   /// last scan (odometry's heading error grows with the turn), then Gauss-Newton.
-  ScanMatch2D matchLocal(const std::vector<Eigen::Vector2f>& points, const Pose2D& from) const {
+  ScanMatch2D matchLocal(const std::vector<Eigen::Vector2f>& points, const Pose2D& from,
+                         bool measured) const {
     const Slam2DConfig& c = config;
     const MatchGrid grid(*submaps[active.front()].grid, table);
     const double turned =
@@ -364,7 +365,7 @@ struct Slam2D::Impl {
     Pose2D at_prediction = match.pose;
     at_prediction.x = from.x;
     at_prediction.y = from.y;
-    if (c.weak_direction_weight > 0 &&
+    if (measured && c.weak_direction_weight > 0 &&
         match.score - scoreAt(grid, points, at_prediction) < c.weak_direction_min_gain) {
       const WeakDirectionPrior weak{Eigen::Vector2d(from.x, from.y), c.weak_direction_weight,
                                     c.weak_direction_information / (c.resolution * c.resolution)};
@@ -465,12 +466,12 @@ void Slam2D::addScan(const LaserScan& scan, const std::optional<Pose2D>& odometr
   if (!d.active.empty() && !node.points.empty()) {
     // Hypotheses within the search window of the first one add nothing.
     const double lw = c.local_linear_window, aw = c.local_angular_window_deg * kPi / 180.0;
-    ScanMatch2D best = d.matchLocal(node.points, predicted);
+    ScanMatch2D best = d.matchLocal(node.points, predicted, fresh_odometry);
     for (std::size_t h = 1; h < hypotheses.size(); ++h) {
       const Pose2D delta = compose(inverse(predicted), hypotheses[h]);
       if (std::fabs(delta.x) <= lw && std::fabs(delta.y) <= lw && std::fabs(delta.theta) <= aw)
         continue;
-      const ScanMatch2D other = d.matchLocal(node.points, hypotheses[h]);
+      const ScanMatch2D other = d.matchLocal(node.points, hypotheses[h], fresh_odometry);
       if (other.score > best.score) best = other;
     }
     pose = best.pose;
