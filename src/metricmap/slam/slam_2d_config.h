@@ -85,7 +85,7 @@ struct Slam2DConfig {
   int branch_and_bound_depth = 7;       ///< levels of the multi-resolution grids (1..16)
 
   // --- pose graph
-  double edge_translation_sigma = 0.02;      ///< m, of the edges between consecutive nodes (> 0)
+  double edge_translation_sigma = 0.005;     ///< m, of the edges between consecutive nodes (> 0)
   double edge_rotation_sigma_deg = 0.25;     ///< deg (> 0)
   double loop_translation_sigma = 0.05;      ///< m, of loop edges (> 0)
   double loop_rotation_sigma_deg = 0.5;      ///< deg (> 0)
