@@ -42,7 +42,7 @@ PY
 slam=$(ate "$tmp/p.tum")
 odom=$(ate odom)
 echo "ATE against the corrected log: slam2d $slam m, raw odometry $odom m"
-check "slam2d within 0.15 m of the corrected log on average (ten runs: 0.06-0.10 m; local SLAM alone: 0.18 m)" \
+check "slam2d within 0.15 m of the corrected log on average (ten runs: 0.05-0.07 m; local SLAM alone: 0.18 m)" \
   /usr/bin/python3 -c "assert $slam < 0.15, $slam"
 check "the raw odometry is far worse (> 5 m), as published" \
   /usr/bin/python3 -c "assert $odom > 5 and $odom > 10 * $slam, ($odom, $slam)"
@@ -96,14 +96,14 @@ import numpy as np; np.savetxt('$tmp/sparse.tum', np.loadtxt('$tmp/p.tum')[::7],
   --odometry "$raw" --format json >"$tmp/rsp.json"
 "$MM" evaluate "$tmp/sparse.tum" --relations "$tmp/rel.txt" --max-time-diff 0.0001 \
   --format json >"$tmp/rsn.json"
-check "--odometry places the stamps a sparse estimate lacks; the metric stays close" /usr/bin/python3 -c "
+check "--odometry places the stamps a sparse estimate lacks; the metric stays close (odometry adds < 0.15 m)" /usr/bin/python3 -c "
 import json; s = json.load(open('$tmp/rs.json')); p = json.load(open('$tmp/rsp.json'))
 n = json.load(open('$tmp/rsn.json'))
 print('sparse + odometry', p['abs_translation_m'], p['relations']['stamps_placed_by_odometry'])
 assert p['relations']['used'] == 810 and p['relations']['stamps_placed_by_odometry'] > 1000, p
 assert n['relations']['used'] < 100, n['relations']
 a, b = p['abs_translation_m']['mean'], s['abs_translation_m']['mean']
-assert a != b and abs(a - b) < 0.5 * b, (a, b)"
+assert a != b and 0.5 * b < a < b + 0.15, (a, b)"
 expect 2 "--odometry has no effect without --relations" -- \
   "$MM" evaluate "$tmp/p.tum" --reference "$tmp/p.tum" --odometry "$raw"
 check "the map's YAML matches its PGM" /usr/bin/python3 -c "
