@@ -116,6 +116,18 @@ def test_slam2d_config_attributes():
         mm.Slam2D(c)
 
 
+@pytest.mark.parametrize(
+    "name,value",
+    [("weak_direction_min_gain", 1.5), ("weak_direction_min_gain", float("nan")),
+     ("weak_direction_information", -1.0), ("weak_direction_weight", float("inf"))])
+def test_slam2d_weak_direction_fields_are_validated(name, value):
+    c = mm.Slam2DConfig()
+    assert c.weak_direction_weight == 10.0 and c.weak_direction_min_gain == 0.05
+    setattr(c, name, value)
+    with pytest.raises(ValueError, match=name):
+        c.validate()
+
+
 # --- pose graphs ------------------------------------------------------------------------------
 
 
