@@ -346,7 +346,8 @@ struct Slam2D::Impl {
 
   /// A scan matched against the older active submap from `from`: the correlative search in
   /// the local window, whose angular half-width grows with the turn `from` makes since the
-  /// last scan (odometry's heading error grows with the turn), then Gauss-Newton.
+  /// last scan (odometry's heading error grows with the turn), then Gauss-Newton. When `from`
+  /// comes from a fresh odometry reading (`measured`), the weak directions keep it.
   ScanMatch2D matchLocal(const std::vector<Eigen::Vector2f>& points, const Pose2D& from,
                          bool measured) const {
     const Slam2DConfig& c = config;
