@@ -251,6 +251,40 @@ TEST(Slam2D, GaussNewtonRecoversAKnownPose) {
   EXPECT_GE(fine.score, scoreAt(view, pts, start));
 }
 
+TEST(Slam2D, WeakDirectionPriorActsAlongTheCorridorOnly) {
+  // Two parallel walls (y = ±1.025, x in [-10, 10]) mapped from inside; a scan in the middle sees
+  // only walls, so its position along x is undetermined and across it is well determined.
+  LogOddsParams p;
+  p.resolution = 0.05;
+  p.prob_hit = 0.7;
+  p.prob_miss = 0.4;
+  LogOddsGrid2D grid(p);
+  std::vector<Eigen::Vector2f> scan;  // sensor frame, from (0, 0, 0): wall points within 4 m
+  for (int k = -80; k <= 80; ++k) {
+    scan.emplace_back(0.05f * static_cast<float>(k) + 0.025f, 1.025f);  // on cell centres
+    scan.emplace_back(0.05f * static_cast<float>(k) + 0.025f, -1.025f);
+  }
+  for (int i = -9; i <= 9; ++i) {
+    std::vector<Eigen::Vector2f> ends;
+    for (const Eigen::Vector2f& q : scan) ends.emplace_back(q.x() + static_cast<float>(i), q.y());
+    for (int r = 0; r < 3; ++r) grid.insertScan(Eigen::Vector2f(static_cast<float>(i), 0.0f), ends);
+  }
+  const ProbabilityTable table(grid.params());
+  const MatchGrid view(grid, table);
+  const Pose2D start{0.3, 0.04, 0.0};
+  const ScanMatch2D plain = refinePose(view, scan, start, start, 1.0, 1.0, 20);
+  EXPECT_NEAR(plain.pose.y, 0.0, 0.02) << "across the corridor the walls place the scan";
+  // The prior's target is 0.2 m ahead along the corridor and 0.2 m across it: it moves the
+  // scan along the corridor (the weak direction) and not across (a strong one).
+  const WeakDirectionPrior weak{Eigen::Vector2d(0.5, 0.2), 10.0, 0.05 / (0.05 * 0.05)};
+  const ScanMatch2D held = refinePose(view, scan, start, start, 1.0, 1.0, 20, false, &weak);
+  EXPECT_NEAR(held.pose.x, 0.5, 0.01) << "held at the target along the corridor";
+  EXPECT_NEAR(held.pose.y, plain.pose.y, 0.005) << "not pulled across it";
+  EXPECT_NEAR(held.pose.theta, plain.pose.theta, 1e-3);
+  EXPECT_LT(std::fabs(plain.pose.x - 0.5), std::fabs(start.x - 0.5) + 1e-9)
+      << "(without the prior nothing moves it there)";
+}
+
 TEST(Slam2D, ClosesASyntheticLoopWithDriftingOdometry) {
   // A robot drives two laps round the room's centre; its odometry drifts in heading.
   Slam2DConfig c;
