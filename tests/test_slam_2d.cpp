@@ -283,6 +283,9 @@ TEST(Slam2D, WeakDirectionPriorActsAlongTheCorridorOnly) {
   EXPECT_NEAR(held.pose.theta, plain.pose.theta, 1e-3);
   EXPECT_LT(std::fabs(plain.pose.x - 0.5), std::fabs(start.x - 0.5) + 1e-9)
       << "(without the prior nothing moves it there)";
+  const WeakDirectionPrior every{weak.target, weak.weight, 1e12};  // every direction "weak"
+  const ScanMatch2D pulled = refinePose(view, scan, start, start, 1.0, 1.0, 20, false, &every);
+  EXPECT_GT(std::fabs(pulled.pose.y - plain.pose.y), 0.1) << "a prior in every direction would";
 }
 
 TEST(Slam2D, ClosesASyntheticLoopWithDriftingOdometry) {
