@@ -12,7 +12,7 @@
 #include "metricmap/grid/grid_accumulator.h"
 #include "metricmap/grid/grid_part.h"
 #include "metricmap/grid/occupancy_grid.h"
-#include "metricmap/io/cell_csv.h"
+#include "metricmap/grid/grid_csv.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/output_set.h"
 #include "ranks.h"

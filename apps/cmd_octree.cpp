@@ -6,7 +6,7 @@
 
 #include "cli_common.h"
 #include "commands.h"
-#include "metricmap/io/cell_csv.h"
+#include "metricmap/octree/octree_csv.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/output_set.h"
 #include "metricmap/octree/adaptive_octree.h"

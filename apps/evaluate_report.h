@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "metricmap/evaluation/pose_relation.h"
+#include "metricmap/common/pose_relation.h"
 #include "metricmap/evaluation/relation_error.h"
 #include "metricmap/evaluation/trajectory_evaluation.h"
 #include "metricmap/io/trajectory.h"

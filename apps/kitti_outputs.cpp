@@ -4,6 +4,7 @@
 #include "metricmap/common/parse_number.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/map_server.h"
+#include "metricmap/io/trajectory.h"
 #include "metricmap/occupancy/occupancy_export.h"
 #include "octomap_quiet.h"
 

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "metricmap/datasets/kitti_sequence.h"
+#include "metricmap/io/trajectory.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/mapping/occupancy_map_2d.h"

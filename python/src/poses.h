@@ -11,7 +11,7 @@
 #include "arrays.h"
 #include "metricmap/common/map_server_image.h"
 #include "metricmap/common/pose_2d.h"
-#include "metricmap/evaluation/trajectory.h"
+#include "metricmap/common/trajectory.h"
 
 namespace metricmap::python {
 

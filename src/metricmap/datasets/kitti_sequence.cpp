@@ -107,22 +107,6 @@ std::vector<std::size_t> parseFrameList(const std::string& text, std::size_t max
   return frames;
 }
 
-std::string formatKittiPoses(const std::vector<Eigen::Isometry3d>& poses) {
-  std::string text;
-  for (const Eigen::Isometry3d& pose : poses) {
-    for (int row = 0; row < 3; ++row) {
-      for (int col = 0; col < 4; ++col) {
-        char num[32];
-        std::snprintf(num, sizeof num, "%.9e", pose.matrix()(row, col));
-        if (row || col) text += ' ';
-        text += num;
-      }
-    }
-    text += '\n';
-  }
-  return text;
-}
-
 std::string KittiSequence::scan(std::size_t frame) const {
   char name[32];
   std::snprintf(name, sizeof name, "%06zu.bin", frame);

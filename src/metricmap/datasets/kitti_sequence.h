@@ -29,9 +29,6 @@ constexpr std::size_t kMaxFrameList = 1000000;
 std::vector<std::size_t> parseFrameList(const std::string& text,
                                         std::size_t max_frames = kMaxFrameList);
 
-/// \brief Poses in a KITTI pose file's form: 12 numbers (row-major 3x4) per line, `%.9e`.
-std::string formatKittiPoses(const std::vector<Eigen::Isometry3d>& poses);
-
 /// \brief Paths of one sequence under a KITTI odometry root.
 struct KittiSequence {
   std::string root, sequence;

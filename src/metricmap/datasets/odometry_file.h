@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "metricmap/evaluation/trajectory.h"
+#include "metricmap/common/trajectory.h"
 
 namespace metricmap {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "metricmap/evaluation/trajectory.h"
+#include "metricmap/common/trajectory.h"
 
 namespace metricmap {
 

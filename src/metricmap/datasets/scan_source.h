@@ -16,7 +16,7 @@
 #include <pcl/point_types.h>
 #include <Eigen/Geometry>
 
-#include "metricmap/evaluation/trajectory.h"
+#include "metricmap/common/trajectory.h"
 #include "metricmap/io/laser_scan.h"
 
 namespace metricmap {

@@ -5,7 +5,7 @@
 /// interpolates with.
 
 #include "metricmap/datasets/scan_source.h"
-#include "metricmap/evaluation/trajectory.h"
+#include "metricmap/common/trajectory.h"
 
 namespace metricmap {
 

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "metricmap/evaluation/trajectory.h"
+#include "metricmap/common/trajectory.h"
 
 namespace metricmap {
 

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "metricmap/evaluation/error_statistics.h"
-#include "metricmap/evaluation/pose_relation.h"
-#include "metricmap/evaluation/trajectory.h"
+#include "metricmap/common/pose_relation.h"
+#include "metricmap/common/trajectory.h"
 
 namespace metricmap {
 

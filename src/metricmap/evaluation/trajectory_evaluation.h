@@ -8,7 +8,7 @@
 #include "metricmap/evaluation/kitti_drift.h"
 #include "metricmap/evaluation/pose_pairing.h"
 #include "metricmap/evaluation/relative_error.h"
-#include "metricmap/evaluation/trajectory.h"
+#include "metricmap/common/trajectory.h"
 
 namespace metricmap {
 

@@ -3,7 +3,7 @@
 /// \brief A trajectory in stamp order: raw logs deliver scans out of order (the Intel log steps
 /// back 631 times), while a TUM file's stamps increase.
 
-#include "metricmap/evaluation/trajectory.h"
+#include "metricmap/common/trajectory.h"
 
 namespace metricmap {
 

@@ -10,7 +10,7 @@
 
 namespace metricmap {
 
-std::vector<viz::DrawnSegment> readLineSegmentsJson(const std::string& path, long long scan) {
+std::vector<Segment2D> readLineSegmentsJson(const std::string& path, long long scan) {
   requireRegularFile(path);
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open");
@@ -23,7 +23,7 @@ std::vector<viz::DrawnSegment> readLineSegmentsJson(const std::string& path, lon
         });
     for (const auto& s : j.at("scans")) {
       if (s.at("scan").get<long long>() != scan) continue;
-      std::vector<viz::DrawnSegment> out;
+      std::vector<Segment2D> out;
       for (const auto& seg : s.at("segments")) {
         out.push_back({Eigen::Vector2d(seg.at("start").at(0).get<double>(),
                                        seg.at("start").at(1).get<double>()),

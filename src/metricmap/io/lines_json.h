@@ -5,13 +5,13 @@
 #include <string>
 #include <vector>
 
-#include "metricmap/viz/scene_types.h"
+#include "metricmap/common/segment_2d.h"
 
 namespace metricmap {
 
 /// \brief The segments (start, end) of scan `scan` in the JSON of `metricmap lines`.
 /// \throws InputError naming the file when it is not that JSON (nesting deeper than 32 levels
 /// is refused while parsing) or has no such scan
-std::vector<viz::DrawnSegment> readLineSegmentsJson(const std::string& path, long long scan);
+std::vector<Segment2D> readLineSegmentsJson(const std::string& path, long long scan);
 
 }  // namespace metricmap

@@ -12,7 +12,6 @@
 #include "metricmap/common/format_number.h"
 #include "metricmap/common/parse_number.h"
 #include "metricmap/common/rigid_transform.h"
-#include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/input_file.h"
 #include "metricmap/io/trajectory_text.h"
@@ -147,6 +146,22 @@ Trajectory readTrajectoryFile(const std::string& path, TrajectoryFormat format,
   if (trajectory.empty()) throw InputError(path + ": no poses (every line blank or a comment)");
   if (detected) *detected = format;
   return trajectory;
+}
+
+std::string formatKittiPoses(const std::vector<Eigen::Isometry3d>& poses) {
+  std::string text;
+  for (const Eigen::Isometry3d& pose : poses) {
+    for (int row = 0; row < 3; ++row) {
+      for (int col = 0; col < 4; ++col) {
+        char num[32];
+        std::snprintf(num, sizeof num, "%.9e", pose.matrix()(row, col));
+        if (row || col) text += ' ';
+        text += num;
+      }
+    }
+    text += '\n';
+  }
+  return text;
 }
 
 std::string formatKittiTrajectory(const Trajectory& trajectory) {

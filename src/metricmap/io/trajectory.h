@@ -10,13 +10,16 @@
 
 #include <Eigen/Geometry>
 
-#include "metricmap/evaluation/trajectory.h"
+#include "metricmap/common/trajectory.h"
 
 namespace metricmap {
 
 /// \brief The form of a trajectory file; Auto decides from the first data line (12 numbers:
 /// KITTI, 8 numbers: TUM).
 enum class TrajectoryFormat { Auto, Kitti, Tum };
+
+/// \brief Poses in a KITTI pose file's form: 12 numbers (row-major 3x4) per line, `%.9e`.
+std::string formatKittiPoses(const std::vector<Eigen::Isometry3d>& poses);
 
 /// \brief "auto" | "kitti" | "tum". \throws std::invalid_argument naming the text
 TrajectoryFormat parseTrajectoryFormat(const std::string& name);

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "metricmap/evaluation/pose_relation.h"
+#include "metricmap/common/pose_relation.h"
 
 namespace metricmap {
 

@@ -15,7 +15,7 @@
 
 #include "metricmap/datasets/scan_source.h"
 #include "metricmap/evaluation/relative_error.h"
-#include "metricmap/evaluation/trajectory.h"
+#include "metricmap/common/trajectory.h"
 #include "metricmap/registration/lidar_odometry.h"
 #include "metricmap/sequence/sensor_profile.h"
 

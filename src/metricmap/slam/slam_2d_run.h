@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "metricmap/evaluation/trajectory.h"
+#include "metricmap/common/trajectory.h"
 #include "metricmap/slam/slam_2d.h"
 
 namespace metricmap {

@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include "metricmap/common/segment_2d.h"
+
 namespace metricmap::viz {
 
 /// \brief An axis-aligned box with the number of points it holds.
@@ -23,9 +25,7 @@ struct SceneOptions {
 };
 
 /// \brief A 2D segment to draw at z = 0 (from `metricmap lines --format json`).
-struct DrawnSegment {
-  Eigen::Vector2d start, end;
-};
+using DrawnSegment = Segment2D;
 
 /// \brief Voxels of an occupancy map to draw as cubes of edge `size` (centres in the world).
 struct VoxelLayer {
