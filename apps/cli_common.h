@@ -52,7 +52,7 @@ extern const CLI::Validator kCellEdge;
 extern const CLI::Validator kCount;
 
 /// \brief A whole number in [min, max] written in decimal digits without leading zeros: checked
-/// against the range of the type it is stored in before it is narrowed (issue 24, class 9).
+/// against the range of the type it is stored in before it is narrowed.
 CLI::Validator countIn(unsigned long long min, unsigned long long max);
 
 /// \brief A number as a message shows a value the program chose (a bound, a default): the
@@ -66,7 +66,7 @@ std::string plainNumber(double value);
 CLI::Validator finiteIn(double min, double max);
 
 /// \brief Usage error (exit 2) when `option` was given on `app`'s command line although it has no
-/// effect in this run (`applies` false): "OPTION has no effect WHY" (issue 24, class 6: an option
+/// effect in this run (`applies` false): "OPTION has no effect WHY" (an option
 /// is honoured or refused, never dropped silently).
 void refuseIgnored(const CLI::App& app, const std::string& option, bool applies,
                    const std::string& why);
@@ -92,7 +92,7 @@ using RolePaths = std::vector<std::pair<std::string, std::string>>;
 void requireDistinctFiles(const RolePaths& inputs, const RolePaths& outputs);
 
 /// \brief Usage error (exit 2) unless `path` ends in one of `extensions` (with the dot, lowercase):
-/// an output gets the format its option writes, and its name must say so (issue 24, class 10).
+/// an output gets the format its option writes, and its name must say so.
 /// `format` names that format in the message. An empty path passes.
 void requireExtension(const std::string& option, const std::string& path,
                       const std::vector<std::string>& extensions, const std::string& format);
@@ -118,8 +118,8 @@ RolePaths kittiInputs(const std::string& root, const std::string& sequence,
                       const std::vector<std::size_t>& frames, bool with_poses);
 
 /// \brief The frames of a `--frames` list (parseFrameList), which must be in acquisition order
-/// without repeats as for `odometry`: a repeated frame would count one scan twice (issue 24,
-/// class 7). \throws UsageError "--frames: ..." (exit 2)
+/// without repeats as for `odometry`: a repeated frame would count one scan twice.
+/// \throws UsageError "--frames: ..." (exit 2)
 std::vector<std::size_t> parseFramesOption(const std::string& text);
 
 /// \brief Keep standard input, output and error open: a closed one is reopened on /dev/null

@@ -37,7 +37,7 @@ void run(const PoseGraphOptions& o) {
     throw InputError(o.input + ": " + std::to_string(n_vertices) +
                      " vertices and no edge: nothing to optimise");
   }
-  // Priced before Ceres builds anything (issue 24, the budget): the estimate optimize() checks.
+  // Priced before Ceres builds anything (the budget): the estimate optimize() checks.
   checkMemory(
       1, planar ? solverMemoryBytes(g.graph2d) : solverMemoryBytes(g.graph3d),
       o.input + ": the solver (" + std::to_string(n_vertices) + " vertices, " +

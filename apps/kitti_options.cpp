@@ -77,7 +77,7 @@ ScanMapperConfig mapperConfig(const KittiOptions& o, KittiWorld world) {
   return c;
 }
 
-/// Options that would have no effect in this run are refused, never dropped (issue 24, class 6).
+/// Options that would have no effect in this run are refused, never dropped.
 void refuseIgnoredOptions(const KittiOptions& o, const CLI::App& app) {
   const bool perturbs = !o.perturb.empty() && perturbation(o.perturb) != std::vector<double>{0, 0};
   refuseIgnored(

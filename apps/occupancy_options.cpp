@@ -23,7 +23,7 @@ std::pair<double, double> parseBand(const std::string& text) {
   }
 }
 
-/// Options that do not apply to the inputs given are refused, never ignored (issue 24, class 6):
+/// Options that do not apply to the inputs given are refused, never ignored:
 /// a .bt/.ot map is exported as it is (no scan options); PCD scans carry their own pose (no KITTI
 /// options); --band only shapes --out-map.
 void refuseIgnoredOptions(const OccupancyOptions& o, bool from_file, bool kitti, bool source) {

@@ -61,8 +61,7 @@ std::string odometryReport(const std::string& format, const std::string& profile
   if (ranges.max_range) given.emplace_back("--max-range");
   if (ranges.min_range) given.emplace_back("--min-range");
   if (ranges.voxel_size) given.emplace_back("--voxel-size");
-  const std::string profile_name =
-      !profile.empty() ? profile : (info.kind == "kitti" ? "kitti" : "auto");
+  const std::string profile_name = !profile.empty() ? profile : info.conventions.default_profile;
   std::string origin = "profile " + profile_name + (r.profile.used ? " from the first scan" : "");
   for (std::size_t i = 0; i < given.size(); ++i) origin += (i == 0 ? "; given: " : ", ") + given[i];
   if (format == "json") {

@@ -42,21 +42,12 @@ void addSourceOptions(CLI::App& app, SourceOptions& o) {
 }
 
 void checkSourceOptions(const CLI::App& app, const SourceOptions& o) {
-  // Options the source would ignore (issue 24, class 6): refused, never dropped silently.
+  // Options the source would ignore: refused, never dropped silently.
   const std::string kind = scanSourceKind(o.path, o.format);
-  const std::string what = kind == "carmen"   ? "a CARMEN log"
-                           : kind == "folder" ? "a folder or list of scans"
-                           : kind == "bag"    ? "a bag"
-                                              : "this source";
-  refuseIgnored(app, "--sequence", kind == "kitti" || kind.empty(),
-                "on " + what + ": only a KITTI root has sequences");
-  for (const char* option : {"--times", "--reference"}) {
-    refuseIgnored(app, option, kind != "carmen",
-                  "on a CARMEN log: its lines carry the scans' stamps and odometry poses");
+  for (const char* option : {"sequence", "times", "reference", "topic"}) {
+    const std::string why = optionUnusedBySource(kind, option);
+    refuseIgnored(app, std::string("--") + option, why.empty(), why);
   }
-  refuseIgnored(app, "--times", kind != "bag", "on a bag: its messages carry the scans' stamps");
-  refuseIgnored(app, "--topic", kind == "bag" || kind.empty(),
-                "on " + what + ": only a bag has topics");
   if (o.frames.empty()) {
     if (app.count("--frames") > 0)
       throw CLI::ValidationError("--frames",
@@ -207,7 +198,8 @@ void checkRangeOptions(const CLI::App& app, const RangeOptions& o) {
 
 void applyRangeOptions(const RangeOptions& o, const std::string& profile, const SourceInfo& info,
                        LidarOdometryConfig& config, SensorProfileRequest& request) {
-  const bool automatic = profile.empty() ? info.kind != "kitti" : profile == "auto";
+  const bool automatic =
+      profile.empty() ? info.conventions.default_profile == "auto" : profile == "auto";
   request.max_range = automatic && !o.max_range;
   request.min_range = automatic && !o.min_range;
   request.voxel_size = automatic && !o.voxel_size;

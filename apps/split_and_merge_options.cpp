@@ -58,7 +58,7 @@ void addSplitAndMergeOptions(CLI::App& app, SplitAndMergeOptions& o) {
 }
 
 void checkSplitAndMergeOptions(const CLI::App& app, const SplitAndMergeOptions& o, bool json) {
-  // Options that would change nothing in this run are refused (issue 24, class 6).
+  // Options that would change nothing in this run are refused.
   // A piece holds at least one point: --min-points 1 purges no more than 0.
   refuseIgnored(app, "--purge", o.min_points > 1 || o.min_length > 0.0,
                 "with --min-points " + std::to_string(o.min_points) +

@@ -27,7 +27,7 @@ struct SplitAndMergeOptions {
 /// \brief Adds the options.
 void addSplitAndMergeOptions(CLI::App& app, SplitAndMergeOptions& o);
 
-/// \brief Options that would change nothing in this run are refused (issue 24, class 6):
+/// \brief Options that would change nothing in this run are refused:
 /// --purge with nothing to purge or no merge step, the noise model without --chi2 or `json`.
 void checkSplitAndMergeOptions(const CLI::App& app, const SplitAndMergeOptions& o, bool json);
 

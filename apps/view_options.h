@@ -32,8 +32,8 @@ bool isScanLog(const std::string& f, const ViewOptions& o);
 /// \brief What drawing an OctoMap's voxels as cubes costs (with free voxels: `with_free`).
 OctomapUse cubeUse(bool with_free);
 
-/// \brief Options that would have no effect on this view are refused, never dropped (issue 24,
-/// class 6): usage errors (exit 2).
+/// \brief Options that would have no effect on this view are refused, never dropped:
+/// usage errors (exit 2).
 void refuseIgnoredViewOptions(const ViewOptions& o, const CLI::App& app);
 
 /// \brief The structures --octree and --grid draw, with their settings.

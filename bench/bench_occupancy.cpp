@@ -91,7 +91,7 @@ void BM_LogOddsMapFreshScan(benchmark::State& state) {
 }
 
 // The same with the portable (plain C++) ray walk forced: the walk of non-x86 CPUs, against the
-// SIMD walk of BM_LogOddsMapFreshScan in the same run (issue 25: within 3x).
+// SIMD walk of BM_LogOddsMapFreshScan in the same run (within 3x).
 void BM_LogOddsMapFreshScanPortable(benchmark::State& state) {
   const detail::ScopedRayPath portable(detail::RayPath::Portable);
   BM_LogOddsMapFreshScan(state);

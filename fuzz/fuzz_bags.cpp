@@ -1,4 +1,4 @@
-// libFuzzer target for the ROS bag readers (issue 26): byte 0 picks what the rest is:
+// libFuzzer target for the ROS bag readers: byte 0 picks what the rest is:
 // 0: a bag file named .mcap (MCAP or ROS 1: openBag goes by the magic), 1: a rosbag2 sqlite3
 // file, 2/3: a PointCloud2 message (CDR / ROS 1 serialisation), 4/5: a LaserScan message (CDR /
 // ROS 1). Every scan topic of a container is read to the end. Anything must either read or raise

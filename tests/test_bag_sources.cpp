@@ -25,6 +25,7 @@
 #include "metricmap/io/scan_file.h"
 #include "metricmap/sequence/odometry_run.h"
 #include "metricmap/sequence/sequence_mapper.h"
+#include "shared_data.h"
 #include "temp_dir.h"
 
 namespace {
@@ -244,7 +245,7 @@ INSTANTIATE_TEST_SUITE_P(Fixtures, MixedBag, ::testing::ValuesIn(kMixed));
 
 TEST(BagSource, RealNebulaVlp16BagListsPacketsAndRefusesThem) {
   const std::string dir = kShared + "/nebula_driver_samples/vlp16_bag";
-  if (!fs::exists(dir)) GTEST_SKIP() << dir << " absent";
+  SKIP_WITHOUT_SHARED_DATA(dir);
   for (const std::string& p : {dir, dir + "/1673400471837873222_0.db3"}) {
     auto bag = metricmap::openBag(p);
     EXPECT_EQ(bag->format(), "rosbag2-sqlite3");

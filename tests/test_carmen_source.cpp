@@ -20,6 +20,7 @@
 #include "metricmap/io/laser_scan.h"
 #include "metricmap/io/text_stream.h"
 #include "scratch_files.h"
+#include "shared_data.h"
 #include "temp_dir.h"
 
 namespace metricmap {
@@ -29,9 +30,7 @@ std::string radish(const std::string& name) {
   return std::string(METRICMAP_SHARED_DATA_DIR) + "/radish_clf_raw/" + name;
 }
 
-#define REQUIRE_FILE(path)                                                     \
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << (path) << " is missing"; \
-  static_assert(true)
+#define REQUIRE_FILE(path) SKIP_WITHOUT_SHARED_DATA(path)
 
 /// One FLASER line as the oracle reads it.
 struct OracleScan {

@@ -19,6 +19,7 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/io/trajectory.h"
 #include "metricmap/io/trajectory_relations.h"
+#include "shared_data.h"
 #include "temp_dir.h"
 
 namespace {
@@ -416,7 +417,7 @@ TEST(Evaluation, RealPairSimilarityCopy) {
   // BALM's real hand-carried trajectory (KITTI form): a similarity copy aligns to zero.
   const std::string path =
       std::string(METRICMAP_SOURCE_DIR) + "/../shared/data/balm_realworld_dev/poses.txt";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not present";
+  SKIP_WITHOUT_SHARED_DATA(path);
   const Trajectory ref = metricmap::readTrajectoryFile(path);
   ASSERT_EQ(ref.size(), 40u);
   Trajectory est;

@@ -14,6 +14,7 @@
 #include "metricmap/datasets/scan_source.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/mapping/log_odds_grid_2d.h"
+#include "shared_data.h"
 
 namespace metricmap {
 namespace {
@@ -106,7 +107,7 @@ TEST(LogOddsGrid2D, EqualsOctomapOnRandomScans) {
 
 TEST(LogOddsGrid2D, EqualsOctomapOnTheIntelLog) {
   const std::string log = std::string(METRICMAP_SHARED_DATA_DIR) + "/radish_clf_raw/intel.clf.bz2";
-  if (!std::filesystem::exists(log)) GTEST_SKIP() << log << " is missing";
+  SKIP_WITHOUT_SHARED_DATA(log);
   auto source = openScanSource(log);
   LogOddsParams p;
   p.resolution = 0.05;

@@ -24,6 +24,7 @@
 #include "metricmap/posegraph/optimize.h"
 #include "metricmap/posegraph/pose_graph.h"
 #include "scratch_files.h"
+#include "shared_data.h"
 
 namespace {
 
@@ -44,10 +45,7 @@ std::string sharedG2o(const std::string& name) {
   return std::string(METRICMAP_SHARED_DATA_DIR) + "/posegraph_g2o/" + name;
 }
 
-#define SKIP_UNLESS_EXISTS(path)                                          \
-  do {                                                                    \
-    if (!fs::exists(path)) GTEST_SKIP() << (path) << " is not available"; \
-  } while (0)
+#define SKIP_UNLESS_EXISTS(path) SKIP_WITHOUT_SHARED_DATA(path)
 
 /// A fresh directory for this process's files.
 fs::path scratchDir() {

@@ -279,7 +279,8 @@ ValueError
         const SourceInfo& info = s.source->info();
         if (profile && *profile != "auto" && *profile != "kitti")
           throw py::value_error("profile must be 'auto', 'kitti' or None, got '" + *profile + "'");
-        const bool automatic = profile ? *profile == "auto" : info.kind != "kitti";
+        const bool automatic =
+            profile ? *profile == "auto" : info.conventions.default_profile == "auto";
         o.profile.max_range = automatic && !max_range;
         o.profile.min_range = automatic && !min_range;
         o.profile.voxel_size = automatic && !voxel_size;

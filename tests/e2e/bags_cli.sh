@@ -13,7 +13,7 @@ PY=/usr/bin/python3
 BAGS=$(cd "$(dirname "$0")/../fixtures/bags" && pwd)
 vlp=$SHARED/nebula_driver_samples/vlp16_bag
 
-if [ -d "$vlp" ]; then
+if has_shared_data "$vlp"; then
   "$MM" info "$vlp" >"$tmp/info.txt"
   check "info lists /velodyne_packets velodyne_msgs/msg/VelodyneScan 4" \
     grep -q "/velodyne_packets velodyne_msgs/msg/VelodyneScan 4 1673400471.837873222 1673400472.138016708 0.300143486" \
@@ -28,8 +28,6 @@ assert t['start_ns'] == 1673400471837873222 and abs(t['duration_s'] - 0.30014348
   expect 2 "velodyne_msgs/msg/VelodyneScan" -- "$MM" odometry "$vlp"
   expect 2 "topic /velodyne_packets is of type velodyne_msgs/msg/VelodyneScan" -- \
     "$MM" odometry "$vlp" --topic /velodyne_packets
-else
-  echo "skip: $vlp absent"
 fi
 
 for b in mixed.db3 mixed_lz4.mcap mixed_zstd_nosummary.mcap mixed_unchunked.mcap mixed_ros1_bz2.bag \

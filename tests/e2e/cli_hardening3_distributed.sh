@@ -13,15 +13,11 @@ DATA=$2
 source "$(dirname "$0")/lib.sh"
 D=$(cd "$DATA" && pwd)
 if ! command -v mpirun >/dev/null; then
-  echo "skip: no mpirun"
-  finish
-  exit 0
+  skip "no mpirun"
 fi
 if "$MM" grid "$D/pcl_test_pcd/milk.pcd" --cell-size 1 --distributed 2>&1 >/dev/null |
   grep -q "built without MPI"; then
-  echo "skip: built without MPI"
-  finish
-  exit 0
+  skip "built without MPI"
 fi
 strip() { grep -v '"seconds"\|"load"\|"grid": [0-9]' "$1"; }
 

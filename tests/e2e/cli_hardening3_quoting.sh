@@ -49,14 +49,12 @@ check "a plain 0 and plain decimals are still counts" bash -c \
 
 # --- MPI: one line, first, once ----------------------------------------------------------------
 if ! command -v mpirun >/dev/null; then
-  echo "skip: no mpirun"
+  skip_part "no mpirun"
   finish
-  exit 0
 fi
 if "$MM" grid "$bun" --cell-size 1 --distributed 2>&1 >/dev/null | grep -q "built without MPI"; then
-  echo "skip: built without MPI"
+  skip_part "built without MPI"
   finish
-  exit 0
 fi
 # mpi_expect NP CODE NEEDLE -- args: exit CODE; the first line of stderr holds NEEDLE; exactly one
 # line of stderr comes from metricmap; nothing on stdout.

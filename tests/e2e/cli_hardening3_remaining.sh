@@ -193,6 +193,6 @@ if command -v mpirun >/dev/null &&
     "test -s '$o/g.pcd' && test \$(grep -c '\"occupied' '$tmp/mpi_out.json') -ge 1"
   rm -f "$o/g.pcd"
 else
-  echo "skip: the MPI cases (no mpirun, or built without MPI)"
+  skip_part "the MPI cases (no mpirun, or built without MPI)"
 fi
 finish

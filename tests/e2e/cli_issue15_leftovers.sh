@@ -75,7 +75,7 @@ if mount -t tmpfs -o size=64k tmpfs "$full" 2>/dev/null; then
   check "full disk: nothing left" test "$(ls "$full")" = filler
   umount "$full"
 else
-  echo "skip: full-disk cases need root (mount -t tmpfs)"
+  skip_part "full-disk cases need root (mount -t tmpfs)"
 fi
 
 # --- 3. occupancy ----------------------------------------------------------------------------

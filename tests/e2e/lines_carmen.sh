@@ -8,10 +8,7 @@ DATA=$2
 SHARED=$3
 source "$(dirname "$0")/lib.sh"
 log=$SHARED/radish_clf_raw/intel.clf.bz2
-if [ ! -f "$log" ]; then
-  echo "skipped: $log is missing"
-  exit 77
-fi
+need_shared_data "$log"
 
 # Scan 100 (0-based): the 101st FLASER line; valid beams are the ranges > 0.
 want=$(bzcat "$log" | awk '$1 == "FLASER" && ++k == 101 { n = 0; for (i = 3; i < 3 + $2; ++i) if ($i > 0) ++n; print n; exit }')

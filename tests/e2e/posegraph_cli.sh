@@ -6,7 +6,7 @@ MM=$1
 SHARED=$3
 source "$(dirname "$0")/lib.sh"
 g=$SHARED/posegraph_g2o
-if [ ! -f "$g/MIT.g2o" ]; then echo "skip: $g missing"; exit 0; fi
+need_shared_data "$g/MIT.g2o"
 chi2_2d() {  # chi2_2d FILE: g2o's chi² of an SE(2) graph, in numpy
   /usr/bin/python3 -c "
 import numpy as np, sys

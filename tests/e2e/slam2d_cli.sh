@@ -8,7 +8,7 @@ SHARED=$3
 source "$(dirname "$0")/lib.sh"
 raw=$SHARED/radish_clf_raw/intel.clf.bz2
 cor=$SHARED/radish_carmen_corrected/intel-corrected.log.gz
-if [ ! -f "$raw" ] || [ ! -f "$cor" ]; then echo "skip: Radish logs missing"; exit 0; fi
+need_shared_data "$raw" "$cor"
 "$MM" slam2d "$raw" --out-poses "$tmp/p.tum" --out-map "$tmp/m.pgm" --out-graph "$tmp/g.g2o" \
   --out-png "$tmp/m.png" --format json >"$tmp/r.json"
 check "all outputs written" test -s "$tmp/p.tum" -a -s "$tmp/m.pgm" -a -s "$tmp/m.yaml" \

@@ -48,6 +48,11 @@ class KittiSource : public ScanSource {
     info_.kind = "kitti";
     info_.path = root;
     info_.sensor_to_base = readKittiCalibTr(seq_.calib());
+    // Poses in camera 0 of the first frame: y points down, maps lie in its x-z plane.
+    info_.conventions.up = Eigen::Vector3f(0, -1, 0);
+    info_.conventions.poses_of_base = true;
+    info_.conventions.pose_frame = "kitti camera 0";
+    info_.conventions.default_profile = "kitti";
     const std::string times =
         !o.times.empty() ? o.times : root + "/sequences/" + o.sequence + "/times.txt";
     if (!o.times.empty() || access(times.c_str(), F_OK) == 0) {

@@ -44,6 +44,21 @@ struct Scan {
 };
 
 /// \brief What a source knows beyond its scans.
+/// \brief How a source's poses and maps are expressed: what the code outside the sources needs
+/// to know of a source, so that nothing asks a source its name.
+struct SourceConventions {
+  /// \brief The world's up axis in the pose frame (KITTI's camera 0: -y).
+  Eigen::Vector3f up = Eigen::Vector3f::UnitZ();
+  /// \brief True when poses are given and written as poses of the base frame (A P A^-1 with
+  /// A = sensor_to_base: KITTI's camera 0 poses), false when they are sensor poses.
+  bool poses_of_base = false;
+  /// \brief The name of the frame poses are written in ("sensor", "kitti camera 0").
+  std::string pose_frame = "sensor";
+  /// \brief The sensor profile used when none is given: "auto" (chosen from the first scan) or
+  /// a named preset ("kitti").
+  std::string default_profile = "auto";
+};
+
 struct SourceInfo {
   /// \brief "kitti", "folder", "carmen" or "bag".
   std::string kind;
@@ -62,6 +77,8 @@ struct SourceInfo {
   bool point_times = false;
   /// \brief True when the scans are planar (2D laser).
   bool planar = false;
+  /// \brief Up axis, pose frame and default sensor profile of this source.
+  SourceConventions conventions;
 };
 
 /// \brief Scans from one place, in acquisition order. Not thread-safe.
@@ -101,6 +118,12 @@ struct ScanSourceOptions {
 /// "kitti", "folder", "carmen", "bag"): one of those, or "" when it would refuse the
 /// path (missing, or none of these). Reads nothing but the file system's entries.
 std::string scanSourceKind(const std::string& path, const std::string& format);
+
+/// \brief Why a source of `kind` (as scanSourceKind gives it; "" when unknown) would not use
+/// the option `option` ("sequence", "times", "reference" or "topic"): a phrase such as "on a
+/// CARMEN log: its lines carry the scans' stamps and odometry poses", or "" when the source
+/// uses it (or the kind is unknown, so the opening itself will say what is wrong).
+std::string optionUnusedBySource(const std::string& kind, const std::string& option);
 
 /// \brief Open the source at `path`: a KITTI odometry root (has sequences/), a folder of scans
 /// (.pcd .ply .bin .npy, one format), a list file (.txt of scan paths) or a CARMEN log

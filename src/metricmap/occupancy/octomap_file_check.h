@@ -10,7 +10,7 @@ namespace metricmap {
 
 /// \brief The voxel edges (m) an OctoMap file's `res` line may hold for metricmap's reader: 0.1 mm
 /// (below that the 16-level key space is under 7 m wide) to 1 km. Options whose value ends up in
-/// that line are checked against the same range (issue 24, class 5).
+/// that line are checked against the same range.
 constexpr double kOctomapMinResolution = 1e-4, kOctomapMaxResolution = 1e3;
 
 /// \brief The header fields of an OctoMap file and where its tree data starts.

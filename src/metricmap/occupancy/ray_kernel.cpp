@@ -757,19 +757,19 @@ void uniteScanUpdates(ScanUpdate& into, const ScanUpdate& from, std::size_t max_
   }
 }
 
-RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
-  out.clear();
-  out.ends.clear();
-  const bool portable = rayPath() == RayPath::Portable;  // once per scan
+namespace {
+
+/// The scan's beams as end points and end keys (max_range cut applied, non-finite points
+/// counted and dropped), and the key box they span (`lo`, `hi`, the origin's key included).
+RayCastCounts collectEnds(const RayCastInput& in, const Key3& ko, ScanUpdate& out,
+                          std::int64_t lo[3], std::int64_t hi[3]) {
   RayCastCounts counts;
   const double res = in.resolution;
   const double inv_res = 1.0 / res;
   const float* o = in.origin;
-  Key3 ko;
-  if (!keyOf(o, inv_res, ko)) outsideKeySpace(o, res);
   const bool cut_enabled = std::isfinite(in.max_range);
   const auto max_range_f = static_cast<float>(in.max_range);
-  std::int64_t lo[3] = {ko.v[0], ko.v[1], ko.v[2]}, hi[3] = {ko.v[0], ko.v[1], ko.v[2]};
+  for (int i = 0; i < 3; ++i) lo[i] = hi[i] = ko.v[i];
   out.ends.reserve(in.count);
   const auto* bytes = reinterpret_cast<const unsigned char*>(in.xyz);
   for (std::size_t n = 0; n < in.count; ++n) {
@@ -809,84 +809,115 @@ RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
     }
     out.ends.push_back(end);
   }
-  // The box of the scan: x from a multiple of 64, rows padded to 64 bits. OctoMap's walk may
-  // step one voxel past an end voxel when a beam ends within rounding of a voxel edge (it then
-  // stops on the length test), so the box has a margin of 2 voxels on every side.
+  return counts;
+}
+
+#if METRICMAP_RAY_SIMD
+/// The eight-lane walk over a box of whole blocks (multiples of 8 on every axis); false when
+/// the box is too large for the dense bitmap (nothing done then).
+bool walkBlockedAvx512(const RayCastInput& in, const Key3& ko, const std::int64_t lo[3],
+                       const std::int64_t hi[3], ScanUpdate& out, Marker& marker) {
+  const std::int64_t bx0 = lo[0] >> kBlockShift, by0 = lo[1] >> kBlockShift;
+  const std::int64_t bz0 = lo[2] >> kBlockShift;
+  BlockedBits free{nullptr,
+                   bx0 * kBlockEdge,
+                   by0 * kBlockEdge,
+                   bz0 * kBlockEdge,
+                   (hi[0] >> kBlockShift) - bx0 + 1,
+                   (hi[1] >> kBlockShift) - by0 + 1,
+                   (hi[2] >> kBlockShift) - bz0 + 1};
+  const std::int64_t box_words = free.nbx * free.nby * free.nbz * kBlockWords;
+  if (box_words > kDenseWordLimit) return false;
+  const auto words = static_cast<std::size_t>(box_words);
+  // free bits, hit bits, and one spare word for the idle lanes
+  if (out.dense.size() < 2 * words + 1) out.dense.assign(2 * words + 1, 0);
+  free.bits = out.dense.data();
+  BlockedBits hits = free;
+  hits.bits = out.dense.data() + words;
+  BeamFeed<BlockedBits> feed{out.ends.data(),
+                             out.ends.data() + out.ends.size(),
+                             in.origin,
+                             ko,
+                             in.resolution,
+                             &free,
+                             &hits};
+  walkFeedAvx512(feed, free, static_cast<std::int64_t>(2 * words));
+  out.dense[2 * words] = 0;
+  try {
+    harvestBlocked(free, false, marker);
+    harvestBlocked(hits, true, marker);
+  } catch (...) {  // too many blocks: leave the reused bitmap clear for the next scan
+    std::fill(out.dense.begin(), out.dense.begin() + static_cast<std::ptrdiff_t>(2 * words), 0);
+    throw;
+  }
+  return true;
+}
+#endif
+
+/// The walk over a box of 64-bit rows (x from a multiple of 64); false when the box is too
+/// large for the dense bitmap (nothing done then).
+bool walkLinear(const RayCastInput& in, const Key3& ko, const std::int64_t lo[3],
+                const std::int64_t hi[3], bool portable, ScanUpdate& out, Marker& marker) {
+  const float* o = in.origin;
+  const double res = in.resolution;
+  const std::int64_t x0 = (lo[0] >> 6) * 64;  // a multiple of 64 (and of 8)
+  const std::int64_t words_per_row = ((hi[0] - x0) >> 6) + 1;
+  const std::int64_t ny = hi[1] - lo[1] + 1, nz = hi[2] - lo[2] + 1;
+  if (words_per_row * ny * nz > kDenseWordLimit) return false;
+  const auto words = static_cast<std::size_t>(words_per_row * ny * nz);
+  // free bits, hit bits, and one spare word for the four-lane walk's idle lanes
+  if (out.dense.size() < 2 * words + 1) out.dense.assign(2 * words + 1, 0);
+  LinearBits free{out.dense.data(), x0, lo[1], lo[2], words_per_row * 64, words_per_row * 64 * ny};
+  LinearBits hits = free;
+  hits.bits = out.dense.data() + words;
+  if (portable) {
+    walkPairs<PortableState>(o, ko, out, res, free, hits);
+  } else {
+#if METRICMAP_RAY_SIMD
+    BeamFeed<LinearBits> feed{
+        out.ends.data(), out.ends.data() + out.ends.size(), o, ko, res, &free, &hits};
+    if (in.lanes >= 4 && haveAvx2()) {
+      walkFeedAvx2(feed, free, static_cast<std::int64_t>(2 * words) * 64);
+      out.dense[2 * words] = 0;
+    } else {
+      walkPairs<LinearState>(o, ko, out, res, free, hits);
+    }
+#endif
+  }
+  try {
+    harvest(free, words_per_row, ny, nz, false, marker);
+    harvest(hits, words_per_row, ny, nz, true, marker);
+  } catch (...) {  // too many blocks: leave the reused bitmap clear for the next scan
+    std::fill(out.dense.begin(), out.dense.begin() + static_cast<std::ptrdiff_t>(2 * words), 0);
+    throw;
+  }
+  return true;
+}
+
+}  // namespace
+
+RayCastCounts castRays(const RayCastInput& in, ScanUpdate& out) {
+  out.clear();
+  out.ends.clear();
+  const bool portable = rayPath() == RayPath::Portable;  // once per scan
+  Key3 ko;
+  if (!keyOf(in.origin, 1.0 / in.resolution, ko)) outsideKeySpace(in.origin, in.resolution);
+  std::int64_t lo[3], hi[3];
+  const RayCastCounts counts = collectEnds(in, ko, out, lo, hi);
+  // The box of the scan. OctoMap's walk may step one voxel past an end voxel when a beam ends
+  // within rounding of a voxel edge (it then stops on the length test), so the box has a
+  // margin of 2 voxels on every side.
   for (int i = 0; i < 3; ++i) {
     lo[i] -= 2;
     hi[i] += 2;
   }
   Marker marker(out, in.max_blocks, in.resolution);
 #if METRICMAP_RAY_SIMD
-  if (!portable && in.lanes >= 8 && haveAvx512()) {
-    // The eight-lane walk's box: whole blocks from multiples of 8 on every axis.
-    const std::int64_t bx0 = lo[0] >> kBlockShift, by0 = lo[1] >> kBlockShift;
-    const std::int64_t bz0 = lo[2] >> kBlockShift;
-    BlockedBits free{nullptr,
-                     bx0 * kBlockEdge,
-                     by0 * kBlockEdge,
-                     bz0 * kBlockEdge,
-                     (hi[0] >> kBlockShift) - bx0 + 1,
-                     (hi[1] >> kBlockShift) - by0 + 1,
-                     (hi[2] >> kBlockShift) - bz0 + 1};
-    const std::int64_t box_words = free.nbx * free.nby * free.nbz * kBlockWords;
-    if (box_words <= kDenseWordLimit) {
-      const auto words = static_cast<std::size_t>(box_words);
-      // free bits, hit bits, and one spare word for the idle lanes
-      if (out.dense.size() < 2 * words + 1) out.dense.assign(2 * words + 1, 0);
-      free.bits = out.dense.data();
-      BlockedBits hits = free;
-      hits.bits = out.dense.data() + words;
-      BeamFeed<BlockedBits> feed{
-          out.ends.data(), out.ends.data() + out.ends.size(), o, ko, res, &free, &hits};
-      walkFeedAvx512(feed, free, static_cast<std::int64_t>(2 * words));
-      out.dense[2 * words] = 0;
-      try {
-        harvestBlocked(free, false, marker);
-        harvestBlocked(hits, true, marker);
-      } catch (...) {  // too many blocks: leave the reused bitmap clear for the next scan
-        std::fill(out.dense.begin(), out.dense.begin() + static_cast<std::ptrdiff_t>(2 * words), 0);
-        throw;
-      }
-      return counts;
-    }
-  }
+  if (!portable && in.lanes >= 8 && haveAvx512() && walkBlockedAvx512(in, ko, lo, hi, out, marker))
+    return counts;
 #endif
-  const std::int64_t x0 = (lo[0] >> 6) * 64;  // a multiple of 64 (and of 8)
-  const std::int64_t words_per_row = ((hi[0] - x0) >> 6) + 1;
-  const std::int64_t ny = hi[1] - lo[1] + 1, nz = hi[2] - lo[2] + 1;
-  if (words_per_row * ny * nz <= kDenseWordLimit) {
-    const auto words = static_cast<std::size_t>(words_per_row * ny * nz);
-    // free bits, hit bits, and one spare word for the four-lane walk's idle lanes
-    if (out.dense.size() < 2 * words + 1) out.dense.assign(2 * words + 1, 0);
-    LinearBits free{out.dense.data(),       x0, lo[1], lo[2], words_per_row * 64,
-                    words_per_row * 64 * ny};
-    LinearBits hits = free;
-    hits.bits = out.dense.data() + words;
-    if (portable) {
-      walkPairs<PortableState>(o, ko, out, res, free, hits);
-    } else {
-#if METRICMAP_RAY_SIMD
-      BeamFeed<LinearBits> feed{
-          out.ends.data(), out.ends.data() + out.ends.size(), o, ko, res, &free, &hits};
-      if (in.lanes >= 4 && haveAvx2()) {
-        walkFeedAvx2(feed, free, static_cast<std::int64_t>(2 * words) * 64);
-        out.dense[2 * words] = 0;
-      } else {
-        walkPairs<LinearState>(o, ko, out, res, free, hits);
-      }
-#endif
-    }
-    try {
-      harvest(free, words_per_row, ny, nz, false, marker);
-      harvest(hits, words_per_row, ny, nz, true, marker);
-    } catch (...) {  // too many blocks: leave the reused bitmap clear for the next scan
-      std::fill(out.dense.begin(), out.dense.begin() + static_cast<std::ptrdiff_t>(2 * words), 0);
-      throw;
-    }
-  } else {
-    walkAll(o, ko, out, res, portable, marker);
-  }
+  if (!walkLinear(in, ko, lo, hi, portable, out, marker))
+    walkAll(in.origin, ko, out, in.resolution, portable, marker);
   return counts;
 }
 

@@ -64,10 +64,11 @@ OdometryRun runOdometry(ScanSource& source, const OdometryRunOptions& options,
   const std::vector<std::size_t> frames = selectFrames(options.frames, source);
   const SourceInfo& info = source.info();
   OdometryRun run;
-  const bool kitti = info.kind == "kitti";
-  run.convention = kitti ? "kitti camera 0" : "sensor";
-  // Output convention: A P A^-1 (A = Tr for KITTI: velodyne poses -> camera 0 poses).
-  const Eigen::Isometry3d a = kitti ? info.sensor_to_base : Eigen::Isometry3d::Identity();
+  run.convention = info.conventions.pose_frame;
+  // Output convention: A P A^-1 (A = sensor -> base where the source's poses are the base's,
+  // as KITTI's camera 0 poses).
+  const Eigen::Isometry3d a =
+      info.conventions.poses_of_base ? info.sensor_to_base : Eigen::Isometry3d::Identity();
   const Eigen::Isometry3d a_inv = inverseOf(a);
   const bool has_ref = info.reference.size() >= source.size();
 

@@ -5,13 +5,21 @@
 #include "metricmap/exceptions.h"
 
 namespace metricmap {
+namespace {
+
+// The coordinate plane perpendicular to the up axis's largest component.
+MapPlane mapPlaneOfUp(const Eigen::Vector3f& up) {
+  Eigen::Index axis = 0;
+  up.cwiseAbs().maxCoeff(&axis);
+  return axis == 0 ? MapPlane::YZ : axis == 1 ? MapPlane::XZ : MapPlane::XY;
+}
+
+}  // namespace
 
 MapConvention mapConvention(const SourceInfo& info) {
   MapConvention c;
-  if (info.kind == "kitti") {
-    c.up = Eigen::Vector3f(0, -1, 0);
-    c.plane = MapPlane::XZ;
-  }
+  c.up = info.conventions.up;
+  c.plane = mapPlaneOfUp(c.up);
   return c;
 }
 
@@ -22,7 +30,7 @@ std::vector<Eigen::Isometry3d> referenceSensorPoses(const ScanSource& source,
     throw InputError(info.path + ": no reference poses (poses/NN.txt, poses.txt or --reference)");
   }
   const Eigen::Isometry3d a =
-      info.kind == "kitti" ? info.sensor_to_base : Eigen::Isometry3d::Identity();
+      info.conventions.poses_of_base ? info.sensor_to_base : Eigen::Isometry3d::Identity();
   std::vector<Eigen::Isometry3d> out;
   out.reserve(frames.size());
   for (std::size_t f : frames) out.push_back(a * info.reference.poses.at(f));
@@ -31,7 +39,7 @@ std::vector<Eigen::Isometry3d> referenceSensorPoses(const ScanSource& source,
 
 std::vector<Eigen::Isometry3d> odometrySensorPoses(const OdometryRun& run, const SourceInfo& info) {
   const Eigen::Isometry3d a =
-      info.kind == "kitti" ? info.sensor_to_base : Eigen::Isometry3d::Identity();
+      info.conventions.poses_of_base ? info.sensor_to_base : Eigen::Isometry3d::Identity();
   std::vector<Eigen::Isometry3d> out;
   out.reserve(run.trajectory.size());
   for (const Eigen::Isometry3d& p : run.trajectory.poses) out.push_back(p * a);
