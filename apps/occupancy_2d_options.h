@@ -12,7 +12,7 @@
 
 #include "cli_common.h"
 #include "metricmap/io/output_set.h"
-#include "metricmap/mapping/scan_mapper.h"
+#include "metricmap/sequence/scan_mapper.h"
 
 namespace metricmap::cli {
 

@@ -7,7 +7,7 @@
 #include "bench_common.h"
 #include "metricmap/datasets/kitti_sequence.h"
 #include "metricmap/io/cloud_reader.h"
-#include "metricmap/mapping/scan_mapper.h"
+#include "metricmap/sequence/scan_mapper.h"
 
 namespace metricmap::bench {
 namespace {

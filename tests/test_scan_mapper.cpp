@@ -13,7 +13,7 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/grid/occupancy_grid.h"
 #include "metricmap/io/cloud_reader.h"
-#include "metricmap/mapping/scan_mapper.h"
+#include "metricmap/sequence/scan_mapper.h"
 #include "test_data.h"
 
 namespace metricmap {

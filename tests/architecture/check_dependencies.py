@@ -9,7 +9,7 @@ Reads every `#include "metricmap/<module>/..."` line under src/metricmap and fai
     the documented exceptions, each with its reason);
   * the graph drawn in docs/ARCHITECTURE.md (between the dependency-graph markers) differs from
     the graph read from the sources.
-`--print` prints the graph block the page should hold.
+`--print` prints the graph block the page should hold; `--write` puts it into the page.
 """
 import os
 import re
@@ -35,7 +35,7 @@ LAYERS = [
 SAME_LAYER = {
     "octree": {"grid"},
     "registration": {"grid"},
-    "mapping": {"grid", "occupancy", "registration"},
+    "mapping": {"grid", "occupancy"},
     "slam": {"mapping", "occupancy", "posegraph"},
     "distance": {"occupancy", "mapping", "grid"},
     "localization": {"slam", "mapping", "occupancy", "registration", "posegraph", "evaluation",
@@ -61,8 +61,7 @@ LIBRARIES = {
 SPLIT_FILES = {
     # liboctomap and PCL's registration stay out of metricmap_mapping, so that a consumer of the
     # maps alone needs neither (PCL's registration makes PCL's config look for VTK).
-    "mapping/scan_mapper.cpp": ("metricmap_sequence", "owns PCL ICP/GICP refinement"),
-    "registration/scan_registration.cpp": ("metricmap_sequence", "PCL registration"),
+    "registration/scan_registration.cpp": ("metricmap_sequence", "PCL's registration"),
     "occupancy/cast_totals.cpp": ("metricmap_sequence", "casts scans of sources"),
     "occupancy/occupancy_inputs.cpp": ("metricmap_sequence", "reads bags and clouds"),
     "occupancy/octomap_export_use.cpp": ("metricmap_sequence", "liboctomap"),
@@ -157,6 +156,12 @@ def main():
     if "--print" in sys.argv:
         print(graph_block(edges))
         return 0
+    if "--write" in sys.argv:
+        path = os.path.join(ROOT, "docs", "ARCHITECTURE.md")
+        text = open(path, encoding="utf-8").read()
+        text = re.sub(r"(<!-- dependency-graph -->\n```\n).*?(\n```\n<!-- /dependency-graph -->)",
+                      lambda m: m.group(1) + graph_block(edges) + m.group(2), text, flags=re.S)
+        open(path, "w", encoding="utf-8").write(text)
     errors = []
     for module in sorted(edges):
         mine = layer_of(module)

@@ -17,7 +17,7 @@
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/io/laser_scan.h"
 #include "metricmap/lines/split_and_merge.h"
-#include "metricmap/mapping/scan_mapper.h"
+#include "metricmap/sequence/scan_mapper.h"
 
 namespace {
 

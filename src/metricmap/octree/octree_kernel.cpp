@@ -204,20 +204,12 @@ OctreeResult buildOctree(const PointSpan& points, const OctreeParams& params) {
   return result;
 }
 
-void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWorkspace& workspace,
-                 OctreeResult& r) {
-  validateOctreeParams(params);
-  r.nodes.clear();
-  r.point_order.clear();
-  r.occupied_leaves.clear();
-  r.stats = OctreeStatistics();
-  const unsigned threads = resolveThreads(params.threads, points.size, std::size_t{1} << 17);
-  const Bounds bounds = computeBounds(points, threads);
-  const Frame frame = makeFrame(bounds, params);
-  if (points.size > 0xFFFFFFFFull) throw CapacityError("octree: more than 2^32 points");
+namespace {
 
-  // Morton keys of the points inside the root at leaf level `frame.levels`, radix-sorted.
-  KeySorter& sorter = workspace.sorter;
+// Morton keys of the points inside the root at leaf level `frame.levels`, radix-sorted; the
+// points' source indices in that order go to r.point_order.
+void sortPointKeys(const PointSpan& points, const OctreeParams& params, const Frame& frame,
+                   unsigned threads, KeySorter& sorter, OctreeResult& r) {
   sorter.reset(points.size, 3 * static_cast<int>(frame.levels));
   const bool fast = mortonKeysFastApplies(points, frame, params);
   sorter.fillParallel(points.size, threads, [&](std::size_t begin, std::size_t end, auto& sink) {
@@ -244,8 +236,32 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
       r.point_order[k] = static_cast<std::uint32_t>(points.sourceIndex(sorter.position(k)));
     }
   });
+}
 
-  // Top-down build over the sorted keys; children of a node are 8 consecutive ranges.
+// First position in [begin, end) whose octant digit at `shift` exceeds c (keys are sorted): a
+// forward scan for short ranges, a binary search for long ones.
+std::size_t octantEnd(const KeySorter& sorter, std::size_t begin, std::size_t end, unsigned shift,
+                      unsigned c) {
+  std::size_t lo = begin, hi = end;
+  if (hi - lo <= 32) {
+    while (lo < hi && ((sorter.key(lo) >> shift) & 7u) <= c) ++lo;
+    return lo;
+  }
+  while (lo < hi) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    if (((sorter.key(mid) >> shift) & 7u) <= c) {
+      lo = mid + 1;
+    } else {
+      hi = mid;
+    }
+  }
+  return lo;
+}
+
+// Top-down build over the sorted keys; children of a node are 8 consecutive ranges.
+void splitNodes(const OctreeParams& params, const Frame& frame, const KeySorter& sorter,
+                OctreeWorkspace& workspace, OctreeResult& r) {
+  const std::size_t n = sorter.size();
   r.root.min = Eigen::Vector3d(frame.min[0], frame.min[1], frame.min[2]);
   r.root.max = Eigen::Vector3d(frame.max[0], frame.max[1], frame.max[2]);
   OctreeNode root;
@@ -275,21 +291,7 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
     std::size_t begin = node.first_point;
     const std::size_t end = begin + node.count;
     for (unsigned c = 0; c < 8; ++c) {
-      // First position in [begin, end) whose octant digit exceeds c (keys are sorted): a
-      // forward scan for short ranges, a binary search for long ones.
-      std::size_t lo = begin, hi = end;
-      if (hi - lo <= 32) {
-        while (lo < hi && ((sorter.key(lo) >> shift) & 7u) <= c) ++lo;
-      } else {
-        while (lo < hi) {
-          const std::size_t mid = lo + (hi - lo) / 2;
-          if (((sorter.key(mid) >> shift) & 7u) <= c) {
-            lo = mid + 1;
-          } else {
-            hi = mid;
-          }
-        }
-      }
+      const std::size_t lo = octantEnd(sorter, begin, end, shift, c);
       OctreeNode child;
       child.depth = node.depth + 1;
       child.parent = static_cast<std::uint32_t>(id);
@@ -300,10 +302,13 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
     }
     for (unsigned c = 8; c-- > 0;) stack.push_back({first_child + c, childBox(box, c)});
   }
+}
 
-  // Sums, kept in the nodes' mean fields until the means are taken: occupied leaves in Morton
-  // order cover the sorted points in one sweep, so the gather can prefetch ahead across
-  // leaves; then children into parents (children follow parents).
+// Sums, kept in the nodes' mean fields until the means are taken: occupied leaves in Morton
+// order cover the sorted points in one sweep, so the gather can prefetch ahead across leaves;
+// then children into parents (children follow parents), and the statistics.
+void sumNodes(const PointSpan& points, const KeySorter& sorter, unsigned threads, OctreeResult& r) {
+  const std::size_t n = sorter.size();
   OctreeStatistics& s = r.stats;
   constexpr std::size_t kAhead = 48;  // prefetch distance, measured (docs/BENCHMARKS.md)
   // Leaf sums in parallel over contiguous runs of leaves (each leaf's sum is its own, in
@@ -350,6 +355,24 @@ void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWork
     s.mean_points_per_occupied_leaf =
         static_cast<double>(s.points) / static_cast<double>(s.occupied_leaves);
   }
+}
+
+}  // namespace
+
+void buildOctree(const PointSpan& points, const OctreeParams& params, OctreeWorkspace& workspace,
+                 OctreeResult& r) {
+  validateOctreeParams(params);
+  r.nodes.clear();
+  r.point_order.clear();
+  r.occupied_leaves.clear();
+  r.stats = OctreeStatistics();
+  const unsigned threads = resolveThreads(params.threads, points.size, std::size_t{1} << 17);
+  const Bounds bounds = computeBounds(points, threads);
+  const Frame frame = makeFrame(bounds, params);
+  if (points.size > 0xFFFFFFFFull) throw CapacityError("octree: more than 2^32 points");
+  sortPointKeys(points, params, frame, threads, workspace.sorter, r);
+  splitNodes(params, frame, workspace.sorter, workspace, r);
+  sumNodes(points, workspace.sorter, threads, r);
 }
 
 }  // namespace metricmap

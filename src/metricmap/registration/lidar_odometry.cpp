@@ -121,7 +121,29 @@ OdometryResult LidarOdometry::registerScan(const Scan& points, const std::vector
   OdometryResult res;
   res.points_in = points.size();
   if (points.empty()) throw InputError(label + ": empty scan (no points)");
+  // Motion of the last frame: the constant-velocity model for the prediction and the deskew.
+  Eigen::Isometry3d velocity = Eigen::Isometry3d::Identity();
+  if (poses_.size() >= 2) {
+    velocity.matrix() = poses_[poses_.size() - 2].matrix().inverse() * poses_.back().matrix();
+  }
+  res.points_used = prepareFrame(points, times, deskew, velocity, label);
+  res.points_source = source_.size();
+  if (poses_.empty()) {  // the first scan defines the world
+    res.pose = res.prediction = Eigen::Isometry3d::Identity();
+  } else {
+    alignFrame(velocity, res.points_used, label, res);
+  }
+  // Keep the rotation orthonormal over long runs.
+  res.pose.linear() = Eigen::Quaterniond(res.pose.linear()).normalized().toRotationMatrix();
+  poses_.push_back(res.pose);
+  addFrameToMaps(res.pose);
+  return res;
+}
 
+template <class Scan>
+std::size_t LidarOdometry::prepareFrame(const Scan& points, const std::vector<double>& times,
+                                        bool deskew, const Eigen::Isometry3d& velocity,
+                                        const std::string& label) {
   // Range window and the first downsampling in one pass; the deskew's times follow the points.
   const RangeWindowCounts counts =
       downsampleInRange(points, config_.min_range, config_.max_range, 0.5 * config_.voxel_size,
@@ -139,86 +161,74 @@ OdometryResult LidarOdometry::registerScan(const Scan& points, const std::vector
                      " and max_range " + formatNumber(config_.max_range) + " m, at least " +
                      std::to_string(config_.min_points) + " needed to register a frame");
   }
-  res.points_used = counts.in_range;
-
-  // Motion of the last frame: the constant-velocity model for the prediction and the deskew.
-  Eigen::Isometry3d velocity = Eigen::Isometry3d::Identity();
-  if (poses_.size() >= 2) {
-    velocity.matrix() = poses_[poses_.size() - 2].matrix().inverse() * poses_.back().matrix();
-  }
-  std::vector<Eigen::Vector3d>& frame = frame_;
   if (deskew) {
     std::vector<double> t(first_idx_.size());
     for (std::size_t i = 0; i < first_idx_.size(); ++i) {
       t[i] = times[static_cast<std::size_t>(first_idx_[i])];
     }
-    frame = deskewScan(frame, t, velocity);
+    frame_ = deskewScan(frame_, t, velocity);
   }
-  voxelDownsample(frame, 1.5 * config_.voxel_size, source_);
-  const std::vector<Eigen::Vector3d>& source = source_;
-  res.points_source = source.size();
-  const bool coarse = config_.coarse_voxel_size > 0.0;
-  if (coarse) {
-    voxelDownsample(frame, 0.5 * config_.coarse_voxel_size, coarse_frame_);
+  voxelDownsample(frame_, 1.5 * config_.voxel_size, source_);
+  if (config_.coarse_voxel_size > 0.0) {
+    voxelDownsample(frame_, 0.5 * config_.coarse_voxel_size, coarse_frame_);
     voxelDownsample(coarse_frame_, 1.5 * config_.coarse_voxel_size, coarse_source_);
   }
+  return counts.in_range;
+}
 
-  if (poses_.empty()) {  // the first scan defines the world
-    res.pose = res.prediction = Eigen::Isometry3d::Identity();
-  } else {
-    const Eigen::Isometry3d& last = poses_.back();
-    res.prediction = last * velocity;
-    Eigen::Isometry3d initial = res.prediction;
-    if (coarse) {
-      const double threshold = coarse_threshold_.threshold();
-      const PointToPointIcpResult c =
-          alignWithRecovery(coarse_source_, coarse_map_, initial, &last, threshold, 0.0,
-                            config_.convergence, res.restarted);
-      Eigen::Isometry3d deviation;
-      deviation.matrix() = initial.matrix().inverse() * c.pose.matrix();
-      coarse_threshold_.update(deviation);
-      initial = c.pose;
-      res.coarse_iterations = c.iterations;
-    }
-    res.coarse = initial;
-    res.threshold = threshold_.threshold();
-    if (config_.max_threshold > 0.0) res.threshold = std::min(res.threshold, config_.max_threshold);
-    // Without a coarse stage the fine one recovers from a bad prediction itself; after one, its
-    // guess is already the coarse map's answer.
-    const PointToPointIcpResult icp =
-        alignWithRecovery(source, map_, initial, coarse ? nullptr : &last, res.threshold,
-                          config_.max_threshold, config_.convergence, res.restarted);
-    if (icp.correspondences < kMinOdometryPairs) {
-      throw InputError(
-          label + ": the registration paired " + std::to_string(icp.correspondences) + " of its " +
-          std::to_string(source.size()) + " downsampled points with the local map, at least " +
-          std::to_string(kMinOdometryPairs) + " needed (" + std::to_string(counts.in_range) +
-          " points in range, voxel size " + decimal(config_.voxel_size) +
-          " m): the pose would rest on too few points; a smaller voxel size keeps "
-          "more");
-    }
-    res.pose = icp.pose;
-    res.correspondences = icp.correspondences;
-    res.iterations = icp.iterations;
-    res.degenerate_directions = icp.degenerate_directions;
-    res.eigen_ratio = icp.eigen_ratio;
-    Eigen::Isometry3d deviation;  // from the guess the fine ICP started at
-    deviation.matrix() = initial.matrix().inverse() * res.pose.matrix();
-    threshold_.update(deviation);
-  }
-  // Keep the rotation orthonormal over long runs.
-  res.pose.linear() = Eigen::Quaterniond(res.pose.linear()).normalized().toRotationMatrix();
-  poses_.push_back(res.pose);
-
-  for (Eigen::Vector3d& p : frame) p = res.pose * p;
-  map_.add(frame);
-  map_.removeFar(res.pose.translation(), config_.max_range);
+void LidarOdometry::alignFrame(const Eigen::Isometry3d& velocity, std::size_t in_range,
+                               const std::string& label, OdometryResult& res) {
+  const bool coarse = config_.coarse_voxel_size > 0.0;
+  const Eigen::Isometry3d& last = poses_.back();
+  res.prediction = last * velocity;
+  Eigen::Isometry3d initial = res.prediction;
   if (coarse) {
-    for (Eigen::Vector3d& p : coarse_frame_) p = res.pose * p;
-    coarse_map_.add(coarse_frame_);
-    coarse_map_.removeFar(res.pose.translation(), config_.max_range);
+    const double threshold = coarse_threshold_.threshold();
+    const PointToPointIcpResult c =
+        alignWithRecovery(coarse_source_, coarse_map_, initial, &last, threshold, 0.0,
+                          config_.convergence, res.restarted);
+    Eigen::Isometry3d deviation;
+    deviation.matrix() = initial.matrix().inverse() * c.pose.matrix();
+    coarse_threshold_.update(deviation);
+    initial = c.pose;
+    res.coarse_iterations = c.iterations;
   }
-  return res;
+  res.coarse = initial;
+  res.threshold = threshold_.threshold();
+  if (config_.max_threshold > 0.0) res.threshold = std::min(res.threshold, config_.max_threshold);
+  // Without a coarse stage the fine one recovers from a bad prediction itself; after one, its
+  // guess is already the coarse map's answer.
+  const PointToPointIcpResult icp =
+      alignWithRecovery(source_, map_, initial, coarse ? nullptr : &last, res.threshold,
+                        config_.max_threshold, config_.convergence, res.restarted);
+  if (icp.correspondences < kMinOdometryPairs) {
+    throw InputError(label + ": the registration paired " + std::to_string(icp.correspondences) +
+                     " of its " + std::to_string(source_.size()) +
+                     " downsampled points with the local map, at least " +
+                     std::to_string(kMinOdometryPairs) + " needed (" + std::to_string(in_range) +
+                     " points in range, voxel size " + decimal(config_.voxel_size) +
+                     " m): the pose would rest on too few points; a smaller voxel size keeps "
+                     "more");
+  }
+  res.pose = icp.pose;
+  res.correspondences = icp.correspondences;
+  res.iterations = icp.iterations;
+  res.degenerate_directions = icp.degenerate_directions;
+  res.eigen_ratio = icp.eigen_ratio;
+  Eigen::Isometry3d deviation;  // from the guess the fine ICP started at
+  deviation.matrix() = initial.matrix().inverse() * res.pose.matrix();
+  threshold_.update(deviation);
+}
+
+void LidarOdometry::addFrameToMaps(const Eigen::Isometry3d& pose) {
+  for (Eigen::Vector3d& p : frame_) p = pose * p;
+  map_.add(frame_);
+  map_.removeFar(pose.translation(), config_.max_range);
+  if (config_.coarse_voxel_size > 0.0) {
+    for (Eigen::Vector3d& p : coarse_frame_) p = pose * p;
+    coarse_map_.add(coarse_frame_);
+    coarse_map_.removeFar(pose.translation(), config_.max_range);
+  }
 }
 
 PointToPointIcpResult LidarOdometry::alignWithRecovery(const std::vector<Eigen::Vector3d>& source,

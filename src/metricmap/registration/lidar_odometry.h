@@ -87,6 +87,18 @@ class LidarOdometry {
   template <class Scan>
   OdometryResult registerScan(const Scan& points, const std::vector<double>& times,
                               const std::string& name);
+  /// The scan's points in range, deskewed, downsampled into frame_, source_ (and the coarse
+  /// stage's buffers); returns the number of points in range. \throws InputError naming
+  /// `label` when too few points are in range.
+  template <class Scan>
+  std::size_t prepareFrame(const Scan& points, const std::vector<double>& times, bool deskew,
+                           const Eigen::Isometry3d& velocity, const std::string& label);
+  /// The pose of the prepared frame (coarse stage, then fine stage, from the constant-velocity
+  /// prediction); fills `res`. \throws InputError naming `label` when too few pairs are found.
+  void alignFrame(const Eigen::Isometry3d& velocity, std::size_t in_range, const std::string& label,
+                  OdometryResult& res);
+  /// Adds the prepared frame at `pose` to the local maps.
+  void addFrameToMaps(const Eigen::Isometry3d& pose);
 
   LidarOdometryConfig config_;
   VoxelHashMap map_;

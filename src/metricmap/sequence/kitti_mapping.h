@@ -14,7 +14,7 @@
 #include <Eigen/Geometry>
 
 #include "metricmap/datasets/kitti_sequence.h"
-#include "metricmap/mapping/scan_mapper.h"
+#include "metricmap/sequence/scan_mapper.h"
 
 namespace metricmap {
 

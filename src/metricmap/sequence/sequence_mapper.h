@@ -14,7 +14,7 @@
 #include <Eigen/Geometry>
 
 #include "metricmap/datasets/scan_source.h"
-#include "metricmap/mapping/scan_mapper.h"
+#include "metricmap/sequence/scan_mapper.h"
 #include "metricmap/sequence/odometry_run.h"
 
 namespace metricmap {

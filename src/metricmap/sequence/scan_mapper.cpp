@@ -1,4 +1,4 @@
-#include "metricmap/mapping/scan_mapper.h"
+#include "metricmap/sequence/scan_mapper.h"
 
 #include <chrono>
 #include <cmath>
@@ -9,7 +9,6 @@
 #include <pcl/common/transforms.h>
 
 #include "metricmap/exceptions.h"
-#include "metricmap/grid/occupancy_grid.h"
 
 namespace metricmap {
 namespace {
@@ -81,26 +80,19 @@ pcl::PointCloud<pcl::PointXYZ> rangeBand(const pcl::PointCloud<pcl::PointXYZ>& s
   return out;
 }
 
-pcl::PointCloud<pcl::PointXYZ> voxelAverage(const pcl::PointCloud<pcl::PointXYZ>& cloud,
-                                            double voxel) {
-  pcl::PointCloud<pcl::PointXYZ> out;
-  if (cloud.empty()) return out;
-  OccupancyGrid<pcl::PointXYZ> grid;
-  grid.setOrigin(GridOrigin::WorldAligned);
-  grid.setCellSize(static_cast<float>(voxel));
-  grid.setInputCloud(std::make_shared<const pcl::PointCloud<pcl::PointXYZ>>(cloud));
-  grid.filter(out);
-  return out;
-}
-
 ScanMapper::ScanMapper(const ScanMapperConfig& config)
     : config_(config),
-      map_((validateScanMapperConfig(config), config.map_resolution), config.plane),
-      global_(std::make_shared<Cloud>()),
+      hit_map_((validateScanMapperConfig(config), config.map_resolution), config.plane, config.up,
+               config.min_height, config.max_height),
+      global_(config.voxel),
       target_(std::make_shared<Cloud>()) {
   if (config.odometry) odometry_ = std::make_unique<LidarOdometry>(config.odometry_config);
-  if (config.occupancy) log_odds_ = std::make_unique<LogOddsMap>(*config.occupancy);
-  if (config.occupancy_2d) grid_2d_ = std::make_unique<LogOddsGrid2D>(config.occupancy_2d->params);
+  if (config.occupancy) log_odds_ = std::make_unique<LogOddsMapSink>(*config.occupancy);
+  if (config.occupancy_2d) {
+    const Occupancy2DConfig& o = *config.occupancy_2d;
+    grid_2d_ = std::make_unique<LogOddsGrid2DSink>(o.params, config.plane, config.up, o.band_min,
+                                                   o.band_max);
+  }
 }
 
 FrameReport ScanMapper::addScan(const Cloud& scan_in_sensor) {
@@ -115,7 +107,6 @@ FrameReport ScanMapper::addScan(const Cloud& scan_in_sensor) {
 }
 
 FrameReport ScanMapper::addScan(const Cloud& scan_in_sensor, const Eigen::Isometry3d& pose) {
-  const RegistrationConfig& reg = config_.registration;
   FrameReport report;
   report.index = used_.size();
   report.points_read = scan_in_sensor.size();
@@ -125,83 +116,59 @@ FrameReport ScanMapper::addScan(const Cloud& scan_in_sensor, const Eigen::Isomet
   auto t = std::chrono::steady_clock::now();
   Cloud kept = rangeBand(scan_in_sensor, config_.min_range, config_.max_range);
   report.seconds_transform += secondsSince(t);
-
-  if (reg.enabled && report.index > 0) {
-    t = std::chrono::steady_clock::now();
-    const Cloud::Ptr source = registrationCloud(kept, reg.cloud);
-    if (source->size() < reg.min_points || target_->size() < reg.min_points) {
-      throw InputError("scan " + std::to_string(report.index) + ": registration needs at least " +
-                       std::to_string(reg.min_points) + " points in the scan and the target (" +
-                       std::to_string(source->size()) + " and " + std::to_string(target_->size()) +
-                       " within 3-40 m above the ground); widen the range band");
-    }
-    const RefineResult r = refineScanPose(source, target_, pose, reg.refine);
-    report.pose_used = r.scan_to_world;
-    report.registered = true;
-    report.converged = r.converged;
-    report.fitness = r.fitness;
-    report.seconds_register = secondsSince(t);
-  }
+  if (config_.registration.enabled && report.index > 0) registerScan(kept, report);
 
   t = std::chrono::steady_clock::now();
-  if (reg.enabled) updateTarget(kept, report.pose_used);
+  if (config_.registration.enabled) updateTarget(kept, report.pose_used);
   Cloud world;
   pcl::transformPointCloud(kept, world, report.pose_used.matrix().cast<float>());
   report.seconds_transform += secondsSince(t);
-  if (grid_2d_) {
-    t = std::chrono::steady_clock::now();
-    report.beams_2d = castInPlane(world, report.pose_used.translation());
-    report.seconds_occupancy_2d = secondsSince(t);
-  }
-  t = std::chrono::steady_clock::now();
-  if (config_.voxel > 0.0) world = voxelAverage(world, config_.voxel);
-  report.points_kept = world.size();
-  report.seconds_transform += secondsSince(t);
-
-  t = std::chrono::steady_clock::now();
-  if (config_.min_height == -HUGE_VAL && config_.max_height == HUGE_VAL) {
-    report.points_mapped = world.size();  // no band: every point is mapped
-    map_.add(world);
-  } else {
-    Cloud band;
-    band.reserve(world.size());
-    for (const auto& p : world) {
-      const float h = config_.up.dot(p.getVector3fMap());
-      if (h >= config_.min_height && h <= config_.max_height) band.push_back(p);
-    }
-    report.points_mapped = band.size();
-    map_.add(band);
-  }
-  report.seconds_map = secondsSince(t);
-  if (log_odds_) {
-    t = std::chrono::steady_clock::now();
-    Cloud full_world;
-    pcl::transformPointCloud(scan_in_sensor, full_world, report.pose_used.matrix().cast<float>());
-    log_odds_->insertScan(full_world, report.pose_used.translation().cast<float>());
-    report.seconds_occupancy = secondsSince(t);
-  }
-  if (config_.keep_global_cloud) *global_ += world;
+  insertIntoSinks(scan_in_sensor, world, report);
   given_.push_back(pose);
   used_.push_back(report.pose_used);
   return report;
 }
 
-std::uint64_t ScanMapper::castInPlane(const Cloud& world, const Eigen::Vector3d& sensor) {
-  const Occupancy2DConfig& c = *config_.occupancy_2d;
-  const int a = config_.plane == MapPlane::YZ ? 1 : 0;
-  const int b = config_.plane == MapPlane::XY ? 1 : 2;
-  const Eigen::Vector3f up = config_.up.normalized();
-  const Eigen::Vector3f s = sensor.cast<float>();
-  const float base = up.dot(s);
-  std::vector<Eigen::Vector2f> ends;
-  ends.reserve(world.size());
-  for (const auto& p : world) {
-    const Eigen::Vector3f v = p.getVector3fMap();
-    const double h = static_cast<double>(up.dot(v) - base);
-    if (h >= c.band_min && h <= c.band_max) ends.emplace_back(v[a], v[b]);
+void ScanMapper::registerScan(const Cloud& kept, FrameReport& report) {
+  const RegistrationConfig& reg = config_.registration;
+  const auto t = std::chrono::steady_clock::now();
+  const Cloud::Ptr source = registrationCloud(kept, reg.cloud);
+  if (source->size() < reg.min_points || target_->size() < reg.min_points) {
+    throw InputError("scan " + std::to_string(report.index) + ": registration needs at least " +
+                     std::to_string(reg.min_points) + " points in the scan and the target (" +
+                     std::to_string(source->size()) + " and " + std::to_string(target_->size()) +
+                     " within 3-40 m above the ground); widen the range band");
   }
-  grid_2d_->insertScan(Eigen::Vector2f(s[a], s[b]), ends);
-  return ends.size();
+  const RefineResult r = refineScanPose(source, target_, report.pose_given, reg.refine);
+  report.pose_used = r.scan_to_world;
+  report.registered = true;
+  report.converged = r.converged;
+  report.fitness = r.fitness;
+  report.seconds_register = secondsSince(t);
+}
+
+void ScanMapper::insertIntoSinks(const Cloud& scan_in_sensor, const Cloud& world,
+                                 FrameReport& report) {
+  auto t = std::chrono::steady_clock::now();
+  const Cloud averaged = config_.voxel > 0.0 ? voxelAverage(world, config_.voxel) : Cloud();
+  const SinkScan scan{scan_in_sensor, world, config_.voxel > 0.0 ? averaged : world,
+                      report.pose_used};
+  report.points_kept = scan.averaged.size();
+  report.seconds_transform += secondsSince(t);
+  if (grid_2d_) {
+    t = std::chrono::steady_clock::now();
+    report.beams_2d = grid_2d_->insert(scan);
+    report.seconds_occupancy_2d = secondsSince(t);
+  }
+  t = std::chrono::steady_clock::now();
+  report.points_mapped = hit_map_.insert(scan);
+  report.seconds_map = secondsSince(t);
+  if (log_odds_) {
+    t = std::chrono::steady_clock::now();
+    log_odds_->insert(scan);
+    report.seconds_occupancy = secondsSince(t);
+  }
+  if (config_.keep_global_cloud) global_.insert(scan);
 }
 
 void ScanMapper::updateTarget(const Cloud& kept_in_sensor, const Eigen::Isometry3d& pose) {
@@ -218,11 +185,9 @@ void ScanMapper::updateTarget(const Cloud& kept_in_sensor, const Eigen::Isometry
   }
 }
 
-std::size_t ScanMapper::occupiedCells() const { return map_.occupied(config_.min_hits); }
+std::size_t ScanMapper::occupiedCells() const { return map().occupied(config_.min_hits); }
 
-ScanMapper::Cloud ScanMapper::globalCloud() const {
-  return config_.voxel > 0.0 ? voxelAverage(*global_, config_.voxel) : *global_;
-}
+ScanMapper::Cloud ScanMapper::globalCloud() const { return global_.cloud(); }
 
 TrajectoryError ScanMapper::trajectoryError(const std::vector<Eigen::Isometry3d>& reference) const {
   if (reference.size() != used_.size()) {

@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 
 #include "metricmap/mapping/log_odds_grid_2d.h"
+#include "metricmap/mapping/map_sinks.h"
 #include "metricmap/mapping/occupancy_map_2d.h"
 #include "metricmap/occupancy/log_odds_map.h"
 #include "metricmap/registration/lidar_odometry.h"
@@ -106,11 +107,13 @@ struct TrajectoryError {
   double ate_used = 0.0;         ///< RMS of `used` translations (m)
 };
 
-/// \brief Scans + poses -> registered global cloud and 2D hit map.
+/// \brief Scans + poses -> the maps of its sinks (mapping/map_sinks.h): the 2D hit map, the
+/// global cloud, and as configured the 3D log-odds map and the 2D log-odds grid.
 ///
-/// Each scan is cut to the range band in its own frame, optionally registered (its pose
-/// refined against the target), moved to the world, optionally averaged in `voxel` cells, and
-/// the points within the height band are counted in the 2D map.
+/// Each scan's pose comes from the caller or from the odometry, optionally refined by
+/// registration against a target (the estimators); the scan is cut to the range band in its
+/// own frame, moved to the world, optionally averaged in `voxel` cells, and handed to every
+/// sink.
 /// \note Thread safety: one instance per thread.
 class ScanMapper {
  public:
@@ -132,12 +135,12 @@ class ScanMapper {
   const OdometryResult& lastOdometry() const { return last_odometry_; }
 
   /// \brief The log-odds map so far; null unless `occupancy` is configured.
-  const LogOddsMap* occupancy() const { return log_odds_.get(); }
+  const LogOddsMap* occupancy() const { return log_odds_ ? &log_odds_->map() : nullptr; }
   /// \brief The 2D log-odds grid so far; null unless `occupancy_2d` is configured.
-  const LogOddsGrid2D* occupancy2D() const { return grid_2d_.get(); }
+  const LogOddsGrid2D* occupancy2D() const { return grid_2d_ ? &grid_2d_->grid() : nullptr; }
 
   /// \brief The 2D hit map so far.
-  const OccupancyMap2D& map() const { return map_; }
+  const OccupancyMap2D& map() const { return hit_map_.map(); }
   /// \brief Cells of the map with at least `min_hits` hits.
   std::size_t occupiedCells() const;
   /// \brief The registered scans in the world, averaged in `voxel` cells when it is > 0.
@@ -155,25 +158,24 @@ class ScanMapper {
 
  private:
   void updateTarget(const Cloud& kept_in_sensor, const Eigen::Isometry3d& pose);
-  std::uint64_t castInPlane(const Cloud& world, const Eigen::Vector3d& sensor);
+  void registerScan(const Cloud& kept, FrameReport& report);
+  void insertIntoSinks(const Cloud& scan_in_sensor, const Cloud& world, FrameReport& report);
 
   ScanMapperConfig config_;
-  OccupancyMap2D map_;
-  Cloud::Ptr global_;
+  // The sinks (the hit map and the global cloud always; the log-odds maps as configured).
+  HitMapSink hit_map_;
+  GlobalCloudSink global_;
+  std::unique_ptr<LogOddsMapSink> log_odds_;
+  std::unique_ptr<LogOddsGrid2DSink> grid_2d_;
+  // The estimators: registration's target, the odometry.
   Cloud::Ptr target_;
-  std::vector<Eigen::Isometry3d> given_, used_;
   std::unique_ptr<LidarOdometry> odometry_;
   OdometryResult last_odometry_;
-  std::unique_ptr<LogOddsMap> log_odds_;
-  std::unique_ptr<LogOddsGrid2D> grid_2d_;
+  std::vector<Eigen::Isometry3d> given_, used_;
 };
 
 /// \brief The points of `scan` whose distance from the origin lies in [min_range, max_range].
 pcl::PointCloud<pcl::PointXYZ> rangeBand(const pcl::PointCloud<pcl::PointXYZ>& scan,
                                          double min_range, double max_range);
-
-/// \brief `cloud` averaged in world-aligned cells of `voxel` (OccupancyGrid, WorldAligned).
-pcl::PointCloud<pcl::PointXYZ> voxelAverage(const pcl::PointCloud<pcl::PointXYZ>& cloud,
-                                            double voxel);
 
 }  // namespace metricmap
