@@ -158,6 +158,19 @@ CLI::Validator finiteIn(double min, double max) {
       "NUMBER");
 }
 
+CLI::Validator declaredRange(const ParameterSpec& spec) {
+  return CLI::Validator(
+      [spec](std::string& s) -> std::string {
+        double v = 0.0;
+        std::string why = checkedDouble(s, v);
+        if (why.empty() && !parameterAccepts(spec, v))
+          why = "'" + quoteForMessage(s) + "' is out of range: " + spec.name + " must be " +
+                parameterRule(spec);
+        return why;
+      },
+      spec.kind == ParameterKind::Real ? "NUMBER" : "INT");
+}
+
 void refuseIgnored(const CLI::App& app, const std::string& option, bool applies,
                    const std::string& why) {
   if (!applies && app.count(option) > 0) throw UsageError(option + " has no effect " + why);

@@ -14,6 +14,8 @@
 #include <pcl/point_types.h>
 #include <CLI/CLI.hpp>
 
+#include "metricmap/common/parameter_schema.h"
+
 #include "metricmap/io/load_report.h"
 #include "metricmap/io/output_set.h"
 
@@ -64,6 +66,10 @@ std::string plainNumber(double value);
 /// \brief A finite decimal number in [min, max]; the message quotes the text given and the
 /// bounds as plainNumber (`'1e3' is out of range: -90 to 90`, never `90.000000`).
 CLI::Validator finiteIn(double min, double max);
+
+/// \brief A number the library's declaration of a parameter accepts (its range and kind:
+/// common/parameter_schema.h), so that an option and `--set` accept the same values.
+CLI::Validator declaredRange(const ParameterSpec& spec);
 
 /// \brief Usage error (exit 2) when `option` was given on `app`'s command line although it has no
 /// effect in this run (`applies` false): "OPTION has no effect WHY" (an option

@@ -51,30 +51,37 @@ void applySettings(const CLI::App& app, const std::vector<std::string>& settings
   }
 }
 
+// The library's declaration of a parameter.
+ParameterSpec spec(const std::string& name) {
+  for (const ParameterSpec& p : slam2DParameterSchema())
+    if (p.name == name) return p;
+  throw std::logic_error("no SLAM parameter " + name);
+}
+
 }  // namespace
 
 void addSlam2DOptions(CLI::App& app, Slam2DOptionValues& o) {
   Slam2DConfig& c = o.config;
   app.add_option("--map-resolution", c.map.resolution, "Cell of the map (m)")
-      ->check(finiteIn(0.005, 10))
+      ->check(declaredRange(spec("map_resolution")))
       ->capture_default_str();
   app.add_option("--resolution", c.resolution, "Cell of the submaps (m)")
-      ->check(finiteIn(0.005, 10))
+      ->check(declaredRange(spec("resolution")))
       ->capture_default_str();
   app.add_option("--max-range", c.max_range, "Beams beyond: free space only (m)")
-      ->check(finiteIn(0.1, 1000))
+      ->check(declaredRange(spec("max_range")))
       ->capture_default_str();
   app.add_option("--scans-per-submap", c.scans_per_submap, "Nodes a submap receives")
-      ->check(countIn(1, 100000))
+      ->check(declaredRange(spec("scans_per_submap")))
       ->capture_default_str();
   app.add_option("--loop-min-score", c.loop_min_score, "Score a loop closure must reach")
-      ->check(finiteIn(0.01, 0.99))
+      ->check(declaredRange(spec("loop_min_score")))
       ->capture_default_str();
   app.add_option("--loop-window", c.loop_linear_window, "Loop search half-width (m)")
-      ->check(finiteIn(0.05, 100))
+      ->check(declaredRange(spec("loop_linear_window")))
       ->capture_default_str();
   app.add_option("--loop-angle", c.loop_angular_window_deg, "Loop search half-angle (deg)")
-      ->check(finiteIn(0.1, 180))
+      ->check(declaredRange(spec("loop_angular_window_deg")))
       ->capture_default_str();
   app.add_option("--set", o.set,
                  "Any SLAM parameter, NAME=VALUE (repeatable; names in docs/SLAM.md)");

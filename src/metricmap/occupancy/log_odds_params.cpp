@@ -1,5 +1,7 @@
 #include "metricmap/occupancy/log_odds_params.h"
 
+#include <cstdio>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -13,24 +15,39 @@ namespace {
   throw std::invalid_argument(msg.str());
 }
 
-void probability(const std::string& name, double p) {
-  if (!(p > 0.0 && p < 1.0)) bad(name, p, "a probability in (0, 1)");
-}
-
 }  // namespace
 
-void validateLogOddsParams(const LogOddsParams& p) {
-  if (!(std::isfinite(p.resolution) && p.resolution > 0.0))
-    bad("resolution", p.resolution, "finite and > 0");
+const std::vector<LogOddsField>& logOddsFields() {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const LogOddsParams d;
+  auto field = [&d](const char* name, const char* unit, ParameterRange range, const char* doc,
+                    double LogOddsParams::*member) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", d.*member);
+    return LogOddsField{{name, ParameterKind::Real, unit, range, doc, text}, member};
+  };
   // A hit must raise a voxel's occupancy and a miss lower it, or the map says nothing.
-  if (!(p.prob_hit > 0.5 && p.prob_hit < 1.0)) bad("prob_hit", p.prob_hit, "in (0.5, 1)");
-  if (!(p.prob_miss > 0.0 && p.prob_miss < 0.5)) bad("prob_miss", p.prob_miss, "in (0, 0.5)");
-  probability("clamp_min", p.clamp_min);
-  probability("clamp_max", p.clamp_max);
-  probability("occupancy_threshold", p.occupancy_threshold);
+  static const std::vector<LogOddsField> fields = {
+      field("resolution", "m", {0.0, kInf, true}, "voxel (cell) edge", &LogOddsParams::resolution),
+      field("prob_hit", "", {0.5, 1.0, true, true}, "P(occupied | hit), added at a beam's end",
+            &LogOddsParams::prob_hit),
+      field("prob_miss", "", {0.0, 0.5, true, true}, "P(occupied | miss), added along a beam",
+            &LogOddsParams::prob_miss),
+      field("clamp_min", "", {0.0, 1.0, true, true}, "lower clamping bound, as a probability",
+            &LogOddsParams::clamp_min),
+      field("clamp_max", "", {0.0, 1.0, true, true}, "upper clamping bound, as a probability",
+            &LogOddsParams::clamp_max),
+      field("occupancy_threshold", "", {0.0, 1.0, true, true},
+            "occupied at this probability or more", &LogOddsParams::occupancy_threshold),
+      field("max_range", "m", {0.0, kInf, true, false, false, "(infinity: no cut)"},
+            "beams are cut here and mark no hit", &LogOddsParams::max_range),
+  };
+  return fields;
+}
+
+void validateLogOddsParams(const LogOddsParams& p) {
+  for (const LogOddsField& f : logOddsFields()) checkParameter(f.spec, p.*f.member);
   if (p.clamp_min > p.clamp_max) bad("clamp_min", p.clamp_min, "<= clamp_max");
-  if (std::isnan(p.max_range) || !(p.max_range > 0.0))
-    bad("max_range", p.max_range, "> 0 (infinity: no cut)");
 }
 
 }  // namespace metricmap

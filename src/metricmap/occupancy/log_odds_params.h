@@ -4,6 +4,9 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
+
+#include "metricmap/common/parameter_schema.h"
 
 namespace metricmap {
 
@@ -25,8 +28,17 @@ struct LogOddsParams {
   double max_range = std::numeric_limits<double>::infinity();
 };
 
-/// \brief Throws std::invalid_argument naming the first bad value (resolution not finite or
-/// <= 0, probabilities outside (0, 1), clamp_min > clamp_max, max_range NaN or <= 0).
+/// \brief One field of LogOddsParams with its declaration.
+struct LogOddsField {
+  ParameterSpec spec;
+  double LogOddsParams::*member;
+};
+
+/// \brief Every field of LogOddsParams, declared once (name, unit, range, doc, default).
+const std::vector<LogOddsField>& logOddsFields();
+
+/// \brief Throws std::invalid_argument naming the first bad value: a field outside its declared
+/// range (logOddsFields), or clamp_min > clamp_max.
 void validateLogOddsParams(const LogOddsParams& params);
 
 /// \brief log(p / (1 - p)) as float, as OctoMap computes it.

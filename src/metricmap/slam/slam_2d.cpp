@@ -1,5 +1,7 @@
 #include "metricmap/slam/slam_2d.h"
 
+#include "metricmap/slam/slam_2d_parameters.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -62,79 +64,10 @@ LogOddsParams submapParams(const Slam2DConfig& c) {
 }  // namespace
 
 void validateSlam2DConfig(const Slam2DConfig& c) {
-  auto need = [](bool ok, const char* what) {
-    if (!ok) throw std::invalid_argument(what);
-  };
-  need(std::isfinite(c.min_range) && c.min_range >= 0, "min_range must be finite and >= 0");
-  need(std::isfinite(c.max_range) && c.max_range > c.min_range,
-       "max_range must be finite and greater than min_range");
-  need(std::isfinite(c.voxel_filter) && c.voxel_filter > 0, "voxel_filter must be > 0");
-  need(std::isfinite(c.resolution) && c.resolution > 0, "resolution must be > 0");
-  need(c.scans_per_submap >= 1, "scans_per_submap must be >= 1");
-  need(c.prob_hit > 0.5 && c.prob_hit < 1, "prob_hit must be in (0.5, 1)");
-  need(c.prob_miss > 0 && c.prob_miss < 0.5, "prob_miss must be in (0, 0.5)");
-  need(std::isfinite(c.node_min_distance) && c.node_min_distance >= 0,
-       "node_min_distance must be >= 0");
-  need(std::isfinite(c.node_min_angle_deg) && c.node_min_angle_deg >= 0,
-       "node_min_angle_deg must be >= 0");
-  need(c.node_max_time > 0, "node_max_time must be > 0");
-  need(std::isfinite(c.local_linear_window) && c.local_linear_window >= 0 &&
-           c.local_linear_window <= 10,
-       "local_linear_window must be in [0, 10] m");
-  need(std::isfinite(c.local_angular_window_deg) && c.local_angular_window_deg >= 0 &&
-           c.local_angular_window_deg <= 180,
-       "local_angular_window_deg must be in [0, 180]");
-  need(std::isfinite(c.local_angular_window_per_turn) && c.local_angular_window_per_turn >= 0 &&
-           c.local_angular_window_per_turn <= 10,
-       "local_angular_window_per_turn must be in [0, 10]");
-  need(std::isfinite(c.weak_direction_min_gain) && c.weak_direction_min_gain >= 0 &&
-           c.weak_direction_min_gain <= 1,
-       "weak_direction_min_gain must be in [0, 1]");
-  need(std::isfinite(c.weak_direction_information) && c.weak_direction_information >= 0 &&
-           c.weak_direction_information <= 1e6,
-       "weak_direction_information must be in [0, 1e6]");
-  need(std::isfinite(c.weak_direction_weight) && c.weak_direction_weight >= 0 &&
-           c.weak_direction_weight <= 1e6,
-       "weak_direction_weight must be in [0, 1e6]");
-  need(std::isfinite(c.translation_weight) && c.translation_weight >= 0,
-       "translation_weight must be >= 0");
-  need(std::isfinite(c.rotation_weight) && c.rotation_weight >= 0, "rotation_weight must be >= 0");
-  need(c.refine_iterations >= 1 && c.refine_iterations <= 1000,
-       "refine_iterations must be in 1..1000");
-  need(std::isfinite(c.loop_linear_window) && c.loop_linear_window > 0 &&
-           c.loop_linear_window <= 100,
-       "loop_linear_window must be in (0, 100] m");
-  need(std::isfinite(c.loop_angular_window_deg) && c.loop_angular_window_deg > 0 &&
-           c.loop_angular_window_deg <= 180,
-       "loop_angular_window_deg must be in (0, 180]");
-  need(c.loop_min_score > 0 && c.loop_min_score < 1, "loop_min_score must be in (0, 1)");
-  need(c.loop_max_distance >= 0 && !std::isnan(c.loop_max_distance),
-       "loop_max_distance must be >= 0");
-  need(c.loop_every_n_nodes >= 1, "loop_every_n_nodes must be >= 1");
-  need(c.loop_search_points >= 10, "loop_search_points must be >= 10");
-  need(c.loop_min_overlap >= 0 && c.loop_min_overlap <= 1, "loop_min_overlap must be in [0, 1]");
-  need(c.loop_max_chi2 > 0, "loop_max_chi2 must be > 0");
-  need(c.branch_and_bound_depth >= 1 && c.branch_and_bound_depth <= 16,
-       "branch_and_bound_depth must be in 1..16");
-  need(std::isfinite(c.edge_translation_sigma) && c.edge_translation_sigma > 0,
-       "edge_translation_sigma must be > 0");
-  need(std::isfinite(c.edge_rotation_sigma_deg) && c.edge_rotation_sigma_deg > 0,
-       "edge_rotation_sigma_deg must be > 0");
-  need(std::isfinite(c.loop_translation_sigma) && c.loop_translation_sigma > 0,
-       "loop_translation_sigma must be > 0");
-  need(std::isfinite(c.loop_rotation_sigma_deg) && c.loop_rotation_sigma_deg > 0,
-       "loop_rotation_sigma_deg must be > 0");
-  need(c.wide_every_n_nodes >= 1, "wide_every_n_nodes must be >= 1");
-  need(c.loop_max_submaps >= 1, "loop_max_submaps must be >= 1");
-  need(std::isfinite(c.wide_linear_window) && c.wide_linear_window > 0 &&
-           c.wide_linear_window <= 100,
-       "wide_linear_window must be in (0, 100] m");
-  need(std::isfinite(c.wide_angular_window_deg) && c.wide_angular_window_deg > 0 &&
-           c.wide_angular_window_deg <= 180,
-       "wide_angular_window_deg must be in (0, 180]");
-  need(c.optimize_every_n_nodes >= 1, "optimize_every_n_nodes must be >= 1");
-  need(c.optimize_iterations >= 1, "optimize_iterations must be >= 1");
-  need(c.final_iterations >= 1, "final_iterations must be >= 1");
+  checkSlam2DParameterRanges(c);  // every field against its declaration (slam_2d_parameters)
+  if (!(c.max_range > c.min_range)) {
+    throw std::invalid_argument("max_range must be greater than min_range");
+  }
   try {
     validateLogOddsParams(c.map);
   } catch (const std::invalid_argument& e) {  // the map's parameters are map_* by name

@@ -6,9 +6,18 @@
 #include <string>
 #include <vector>
 
+#include "metricmap/common/parameter_schema.h"
 #include "metricmap/slam/slam_2d_config.h"
 
 namespace metricmap {
+
+/// \brief Every parameter declared once: name, kind, unit, range, one-line doc and default, in
+/// the order of Slam2DConfig's fields (the final map's as "map_resolution", ...).
+std::vector<ParameterSpec> slam2DParameterSchema();
+
+/// \brief \throws std::invalid_argument "NAME must be RULE, got VALUE" for the first field
+/// outside its declared range.
+void checkSlam2DParameterRanges(const Slam2DConfig& config);
 
 /// \brief The names setSlam2DParameter knows, in the order of Slam2DConfig's fields (the final
 /// map's as "map_resolution", "map_prob_hit", ...).

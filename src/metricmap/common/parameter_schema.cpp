@@ -1,0 +1,69 @@
+#include "metricmap/common/parameter_schema.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <stdexcept>
+
+namespace metricmap {
+namespace {
+
+std::string shortest(double v) {
+  char buf[40];
+  for (int precision = 1; precision <= 17; ++precision) {
+    std::snprintf(buf, sizeof buf, "%.*g", precision, v);
+    if (std::strtod(buf, nullptr) == v) break;
+  }
+  return buf;
+}
+
+}  // namespace
+
+std::string parameterRule(const ParameterSpec& spec) {
+  if (spec.kind == ParameterKind::Switch) return "true or false";
+  const ParameterRange& r = spec.range;
+  const bool has_max = std::isfinite(r.max);
+  std::string rule;
+  if (has_max) {
+    rule = std::string("in ") + (r.min_open ? "(" : "[") + shortest(r.min) + ", " +
+           shortest(r.max) + (r.max_open ? ")" : "]");
+  } else {
+    rule = std::string(r.finite && spec.kind == ParameterKind::Real ? "finite and " : "") +
+           (r.min_open ? "> " : ">= ") + shortest(r.min);
+  }
+  if (*r.note) rule += std::string(" ") + r.note;
+  return rule;
+}
+
+bool parameterAccepts(const ParameterSpec& spec, double v) {
+  if (spec.kind == ParameterKind::Switch) return v == 0.0 || v == 1.0;
+  const ParameterRange& r = spec.range;
+  if (std::isnan(v)) return false;
+  if (std::isinf(v) && (r.finite || v < 0)) return false;
+  if (spec.kind != ParameterKind::Real && std::isfinite(v) && v != std::floor(v)) return false;
+  if (r.min_open ? !(v > r.min) : !(v >= r.min)) return false;
+  if (std::isfinite(r.max) && (r.max_open ? !(v < r.max) : !(v <= r.max))) return false;
+  return true;
+}
+
+void checkParameter(const ParameterSpec& spec, double value) {
+  if (parameterAccepts(spec, value)) return;
+  throw std::invalid_argument(spec.name + " must be " + parameterRule(spec) + ", got " +
+                              shortest(value));
+}
+
+const char* parameterKindName(ParameterKind kind) {
+  switch (kind) {
+    case ParameterKind::Real:
+      return "float";
+    case ParameterKind::Count:
+    case ParameterKind::Integer:
+      return "int";
+    case ParameterKind::Switch:
+      return "bool";
+  }
+  return "float";
+}
+
+}  // namespace metricmap
