@@ -93,18 +93,9 @@ std::uint64_t saturatingSum(std::uint64_t a, std::uint64_t b) {
              : a + b;
 }
 
-/// Reads and checks the file, counts what its leaves expand to, checks that and `use` against
-/// the budget; expands the leaves into the returned map only when `expand`.
-LogOddsMap readTree(const std::string& path, const LogOddsParams& params, const OctomapUse& use,
-                    std::size_t max_voxels, OctomapExpansion* expansion, bool expand) {
-  // a regular file only (a FIFO blocks, /dev/zero never ends), read up to its size, in budget
-  const std::string bytes = readRegularFile(path, std::numeric_limits<std::uint64_t>::max());
-  const OctomapFileInfo info = checkOctomapBytes(bytes, path);
-  LogOddsParams p = params;
-  p.resolution = info.resolution;
-  LogOddsMap map(p);
-  if (info.size == 0) return map;
-
+/// The tree of an OctoMap file's checked bytes, read by liboctomap.
+std::unique_ptr<octomap::OcTree> parseTree(const std::string& bytes, const OctomapFileInfo& info,
+                                           const LogOddsParams& p, const std::string& path) {
   std::unique_ptr<octomap::OcTree> tree;
   std::istringstream in(bytes, std::ios::binary);
   if (info.binary) {
@@ -118,13 +109,18 @@ LogOddsMap readTree(const std::string& path, const LogOddsParams& params, const 
     any.release();
     tree.reset(oc);
   }
-  // expansion budget first: a leaf at depth d covers 8^(16 - d) voxels
-  // blocks: a leaf of 8^3 voxels or more tiles its own; smaller leaves share theirs (counted
-  // once through their sorted block keys)
+  return tree;
+}
+
+/// What the tree's leaves expand to: a leaf at depth d covers 8^(16 - d) voxels; a leaf of 8^3
+/// voxels or more tiles its own blocks, smaller leaves share theirs (counted once through
+/// their sorted block keys). \throws CapacityError past `max_voxels`
+OctomapExpansion countExpansion(const octomap::OcTree& tree, const LogOddsMap& map,
+                                std::size_t max_voxels, const std::string& path) {
   std::size_t total = 0, blocks = 0, occupied = 0;
   std::vector<std::uint64_t> small_leaf_blocks;
-  const unsigned max_depth = tree->getTreeDepth();
-  for (auto it = tree->begin_leafs(), end = tree->end_leafs(); it != end; ++it) {
+  const unsigned max_depth = tree.getTreeDepth();
+  for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it) {
     const unsigned levels = max_depth - it.getDepth();
     if (levels >= 10) throw CapacityError(path + ": a leaf covers more than 2^30 voxels");
     total += std::size_t{1} << (3 * levels);
@@ -145,24 +141,18 @@ LogOddsMap readTree(const std::string& path, const LogOddsParams& params, const 
   std::sort(small_leaf_blocks.begin(), small_leaf_blocks.end());
   blocks += static_cast<std::size_t>(
       std::unique(small_leaf_blocks.begin(), small_leaf_blocks.end()) - small_leaf_blocks.begin());
-  small_leaf_blocks = std::vector<std::uint64_t>();
-  // the map's blocks (and their hash slots) and what the caller builds from the voxels, against
-  // the memory budget, before the expansion
   OctomapExpansion e;
   e.voxels = total;
   e.occupied_voxels = occupied;
   e.free_voxels = total - occupied;
   e.blocks = blocks;
-  e.map_bytes = saturatingProduct(blocks, 2 * sizeof(detail::VoxelBlock) + 16);
-  e.use_bytes = saturatingSum(saturatingProduct(e.occupied_voxels, use.bytes_per_occupied_voxel),
-                              saturatingProduct(e.free_voxels, use.bytes_per_free_voxel));
-  if (expansion != nullptr) *expansion = e;
-  std::string what = path + " (" + std::to_string(total) + " voxels, " + std::to_string(occupied) +
-                     " occupied, in " + std::to_string(blocks) + " blocks";
-  if (!use.purpose.empty()) what += ", " + use.purpose;
-  checkMemory(saturatingSum(e.map_bytes, e.use_bytes), 1, what + ")");
-  if (!expand) return map;
-  for (auto it = tree->begin_leafs(), end = tree->end_leafs(); it != end; ++it) {
+  return e;
+}
+
+/// Every leaf of the tree as its voxels in `map`.
+void expandLeaves(const octomap::OcTree& tree, LogOddsMap& map) {
+  const unsigned max_depth = tree.getTreeDepth();
+  for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it) {
     const octomap::OcTreeKey base = it.getIndexKey();
     const std::int64_t edge = std::int64_t{1} << (max_depth - it.getDepth());
     const float l = it->getLogOdds();
@@ -175,6 +165,33 @@ LogOddsMap readTree(const std::string& path, const LogOddsParams& params, const 
       }
     }
   }
+}
+
+/// Reads and checks the file, counts what its leaves expand to, checks that and `use` against
+/// the budget; expands the leaves into the returned map only when `expand`.
+LogOddsMap readTree(const std::string& path, const LogOddsParams& params, const OctomapUse& use,
+                    std::size_t max_voxels, OctomapExpansion* expansion, bool expand) {
+  // a regular file only (a FIFO blocks, /dev/zero never ends), read up to its size, in budget
+  const std::string bytes = readRegularFile(path, std::numeric_limits<std::uint64_t>::max());
+  const OctomapFileInfo info = checkOctomapBytes(bytes, path);
+  LogOddsParams p = params;
+  p.resolution = info.resolution;
+  LogOddsMap map(p);
+  if (info.size == 0) return map;
+  const std::unique_ptr<octomap::OcTree> tree = parseTree(bytes, info, p, path);
+  // the map's blocks (and their hash slots) and what the caller builds from the voxels, against
+  // the memory budget, before the expansion
+  OctomapExpansion e = countExpansion(*tree, map, max_voxels, path);
+  e.map_bytes = saturatingProduct(e.blocks, 2 * sizeof(detail::VoxelBlock) + 16);
+  e.use_bytes = saturatingSum(saturatingProduct(e.occupied_voxels, use.bytes_per_occupied_voxel),
+                              saturatingProduct(e.free_voxels, use.bytes_per_free_voxel));
+  if (expansion != nullptr) *expansion = e;
+  std::string what = path + " (" + std::to_string(e.voxels) + " voxels, " +
+                     std::to_string(e.occupied_voxels) + " occupied, in " +
+                     std::to_string(e.blocks) + " blocks";
+  if (!use.purpose.empty()) what += ", " + use.purpose;
+  checkMemory(saturatingSum(e.map_bytes, e.use_bytes), 1, what + ")");
+  if (expand) expandLeaves(*tree, map);
   return map;
 }
 
