@@ -29,8 +29,8 @@ void validateLogOddsParams(const LogOddsParams& p) {
   probability("clamp_max", p.clamp_max);
   probability("occupancy_threshold", p.occupancy_threshold);
   if (p.clamp_min > p.clamp_max) bad("clamp_min", p.clamp_min, "<= clamp_max");
-  if (std::isnan(p.max_range) || !(p.max_range > 0.0))
-    bad("max_range", p.max_range, "> 0 (infinity: no cut)");
+  if (!(p.max_range >= kMinLogOddsMaxRange))
+    bad("max_range", p.max_range, ">= 0.001 m (infinity: no cut)");
 }
 
 }  // namespace metricmap

@@ -21,12 +21,19 @@ struct LogOddsParams {
   double clamp_max = 0.971;
   /// \brief A voxel is occupied when its probability is >= this, free otherwise.
   double occupancy_threshold = 0.5;
-  /// \brief Beams longer than this are cut here and mark no hit (> 0; infinity: no cut).
+  /// \brief Beams longer than this are cut here and mark no hit (>= kMinLogOddsMaxRange;
+  /// infinity: no cut).
   double max_range = std::numeric_limits<double>::infinity();
 };
 
+/// \brief The shortest beam cut a map accepts (m): 1 mm, the CLI's smallest range. Far below it a
+/// cut beam's float direction underflows (its squared length is 0 below ~1e-19 m), and no sensor
+/// measures a range shorter.
+inline constexpr double kMinLogOddsMaxRange = 1e-3;
+
 /// \brief Throws std::invalid_argument naming the first bad value (resolution not finite or
-/// <= 0, probabilities outside (0, 1), clamp_min > clamp_max, max_range NaN or <= 0).
+/// <= 0, probabilities outside (0, 1), clamp_min > clamp_max, max_range NaN or below
+/// kMinLogOddsMaxRange).
 void validateLogOddsParams(const LogOddsParams& params);
 
 /// \brief log(p / (1 - p)) as float, as OctoMap computes it.
