@@ -65,9 +65,11 @@ std::string runRelations(const EvaluateOptions& o) {
                        ": no time stamps (KITTI form); --odometry needs a CARMEN "
                        "log or a TUM trajectory");
   }
-  const RelationError e = relationError(est.trajectory, relations, o.max_time_diff,
-                                        o.odometry.empty() ? nullptr : &odometry);
-  if (e.used == 0) {
+  RelationError e;
+  try {
+    e = relationError(est.trajectory, relations, o.max_time_diff,
+                      o.odometry.empty() ? nullptr : &odometry);
+  } catch (const InputError&) {  // no relation measured: named with the files
     throw InputError(o.relations + ": none of its " + std::to_string(relations.size()) +
                      " relations has both stamps within " + num(o.max_time_diff) +
                      " s of a stamp of " + o.estimate +

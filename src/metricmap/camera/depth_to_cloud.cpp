@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "metricmap/common/float_range.h"
 #include "metricmap/common/format_number.h"
 
 namespace metricmap {
@@ -39,6 +40,13 @@ pcl::PointCloud<PointT> project(const DepthImage& depth, const CameraIntrinsics&
         continue;
       }
       const double z = d * depth_scale;
+      // A depth no float holds would read as 0: a valid pixel at the camera centre
+      if (belowFloatRange(z)) {
+        throw std::invalid_argument(
+            "depth scale " + formatNumber(depth_scale) + " times raw depth " + std::to_string(d) +
+            " at pixel (" + std::to_string(u) + ", " + std::to_string(v) + ") gives " +
+            formatNumber(z) + " m, below float range (1.17549e-38): it would read as 0");
+      }
       p.x = static_cast<float>((u - k.cx) * z / k.fx);
       p.y = static_cast<float>((v - k.cy) * z / k.fy);
       p.z = static_cast<float>(z);

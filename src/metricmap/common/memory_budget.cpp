@@ -91,4 +91,21 @@ void checkMemory(std::uint64_t count, std::uint64_t item_bytes, const std::strin
   }
 }
 
+void checkMemoryBeside(std::uint64_t count, std::uint64_t item_bytes, std::uint64_t held,
+                       const std::string& what) {
+  const std::uint64_t limit = memoryBudget();
+  if (held == 0) return checkMemory(count, item_bytes, what);
+  __extension__ typedef unsigned __int128 U128;  // GCC/Clang; __extension__: no -Wpedantic
+  const U128 need = static_cast<U128>(count) * item_bytes;
+  if (need + held > limit) {
+    const U128 need_mib = (need + ((1u << 20) - 1)) >> 20;
+    const std::string shown = need_mib > 0xFFFFFFFFFFFFull
+                                  ? "more than 2^48 MiB"
+                                  : std::to_string(static_cast<std::uint64_t>(need_mib)) + " MiB";
+    throw CapacityError(what + " needs " + shown + " beside the " + mib(held) +
+                        " already held, more than the memory budget of " + mib(limit) +
+                        " (--max-memory)");
+  }
+}
+
 }  // namespace metricmap

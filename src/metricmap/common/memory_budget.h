@@ -21,4 +21,9 @@ std::uint64_t parseByteSize(const std::string& text, const std::string& what);
 /// \param what names the input or option that asked for the memory ("t.png: 30000 x 30000 pixels")
 void checkMemory(std::uint64_t count, std::uint64_t item_bytes, const std::string& what);
 
+/// \brief checkMemory for an allocation made while `held` bytes are in use by the same work
+/// (the other maps of a pipeline): the sum must fit in the budget.
+void checkMemoryBeside(std::uint64_t count, std::uint64_t item_bytes, std::uint64_t held,
+                       const std::string& what);
+
 }  // namespace metricmap

@@ -18,6 +18,11 @@ constexpr double kRotationTolerance = 1e-3;
 /// (a float coordinate there still resolves 6 cm).
 constexpr double kMaxTranslation = 1e6;
 
+/// \brief Largest angle accepted where a rotation is given as angles (g2o theta, roll pitch
+/// yaw), radians: unwrapped headings of 150 000 turns still resolve 1e-10 rad; at 1e17 a double
+/// no longer tells one turn from the next (its spacing there is 16 rad).
+constexpr double kMaxAngle = 1e6;
+
 /// \brief Throw std::invalid_argument "WHAT: REASON" unless `m` is a rigid transform: the upper
 /// left 3x3 orthonormal within kRotationTolerance with determinant +1, the translation finite
 /// and within kMaxTranslation, and (when `check_last_row`) the last row 0 0 0 1.

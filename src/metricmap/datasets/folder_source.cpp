@@ -58,13 +58,34 @@ std::string scanExtension(const fs::path& p) {
   return "";
 }
 
+/// What an entry named like a scan is when it is not a regular file ("" when it is one).
+std::string notRegular(const fs::path& p) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(p, ec);  // follows links
+  if (fs::is_regular_file(st)) return "";
+  if (ec) {
+    std::error_code lec;
+    if (ec == std::errc::too_many_symbolic_link_levels) return "a symbolic link loop";
+    if (fs::is_symlink(fs::symlink_status(p, lec))) return "a dangling link (" + ec.message() + ")";
+    return "unreadable (" + ec.message() + ")";
+  }
+  if (fs::is_directory(st)) return "a directory";
+  if (fs::is_fifo(st)) return "a FIFO";
+  if (fs::is_socket(st)) return "a socket";
+  return "a device or special file";
+}
+
 std::vector<std::string> listFolder(const std::string& dir) {
   std::vector<std::string> names;
   std::error_code ec;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    if (!scanExtension(it->path()).empty() && it->is_regular_file(ec)) {
-      names.push_back(it->path().filename().string());
+    if (scanExtension(it->path()).empty()) continue;
+    // Named like a scan but not a file: refused, never skipped (a frame would silently vanish)
+    if (const std::string what = notRegular(it->path()); !what.empty()) {
+      throw InputError(dir + ": " + it->path().filename().string() +
+                       " is named like a scan but is " + what);
     }
+    names.push_back(it->path().filename().string());
   }
   if (ec) throw InputError(dir + ": cannot list (" + ec.message() + ")");
   std::sort(names.begin(), names.end(), naturalLess);

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
 
 #include "metricmap/evaluation/pose_pairing.h"
 #include "metricmap/evaluation/rotation_angle.h"
+#include "metricmap/exceptions.h"
 
 namespace metricmap {
 namespace {
@@ -105,6 +107,13 @@ RelationError relationError(const Trajectory& estimate, const std::vector<PoseRe
     r_sq.push_back(e.rotation_deg.back() * e.rotation_deg.back());
   }
   e.used = e.translation.size();
+  if (e.used == 0) {  // no relation measured: a mean of 0 would read as a perfect estimate
+    std::ostringstream msg;
+    msg << "none of the " << relations.size() << " relations has both stamps within "
+        << max_time_diff << " s of a stamp of the estimate"
+        << (odometry ? " or within the span of the odometry" : "") << ": nothing to measure";
+    throw InputError(msg.str());
+  }
   e.interpolated = interpolated;
   e.translation_abs = meanAndSampleStd(e.translation);
   e.translation_sq = meanAndSampleStd(t_sq);

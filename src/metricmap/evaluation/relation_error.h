@@ -44,7 +44,7 @@ struct RelationError {
 /// Stamps need not increase (raw logs step back): they are searched in sorted order, the first
 /// of equal stamps in the estimate's order winning.
 /// \throws std::invalid_argument when the estimate (or the odometry) has no stamps or one is not
-/// finite
+/// finite; InputError when no relation could be measured (both stamps found)
 RelationError relationError(const Trajectory& estimate, const std::vector<PoseRelation>& relations,
                             double max_time_diff = 0.01, const Trajectory* odometry = nullptr);
 

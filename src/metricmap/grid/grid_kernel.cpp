@@ -56,12 +56,27 @@ void checkAxis(double cells, float cell_size) {
   }
 }
 
+/// Cells measured from the cloud's minimum snap float rounding onto the boundary above (up to
+/// kFloatSnap of the coordinates in cells); past half a cell the snap would move points across
+/// whole cells (the minimum itself out of cell 0): the cell is finer than the coordinates.
+void checkSnap(double lo, double hi, double cell) {
+  const double extent = (std::fabs(lo) + std::fabs(hi) + (hi - lo)) * kFloatSnap;
+  if (!(extent / cell < 0.5)) {
+    std::ostringstream os;
+    os << "cell size " << static_cast<float>(cell)
+       << " is finer than float32 resolves the cloud's coordinates (" << lo << " to " << hi
+       << "): cells from the cloud's minimum need a cell size above " << 2.0 * extent;
+    throw CapacityError(os.str());
+  }
+}
+
 GridLayout makeLayout(const Bounds& b, const GridParams& params) {
   GridLayout layout;
   layout.cell_size = params.cell_size;
   const float inv = 1.0f / params.cell_size;
   for (int a = 0; a < 3; ++a) {
     if (params.origin == GridOrigin::CloudMinimum) {
+      checkSnap(b.min[a], b.max[a], params.cell_size);
       const double hi = snappedFloor(b.max[a], b.min[a], params.cell_size);
       checkAxis(hi, params.cell_size);
       layout.min_index[a] = 0;

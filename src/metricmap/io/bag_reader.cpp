@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "metricmap/exceptions.h"
+#include "metricmap/io/input_file.h"
 #include "metricmap/io/mcap_reader.h"
 #include "metricmap/io/rosbag1_reader.h"
 #include "metricmap/io/rosbag2_sqlite.h"
@@ -56,8 +57,8 @@ bool looksLikeBag(const std::string& path) {
 std::unique_ptr<BagReader> openBag(const std::string& path) {
   std::error_code ec;
   const std::string file = fs::is_directory(path, ec) ? storageFile(path) : path;
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file + ": cannot open");
+  // stat before open: opening a FIFO named like a bag would block until a writer came
+  std::ifstream in = openRegularFile(file);
   char magic[16] = {};
   in.read(magic, sizeof magic);
   const std::size_t got = static_cast<std::size_t>(in.gcount());

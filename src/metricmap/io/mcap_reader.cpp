@@ -12,6 +12,7 @@
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/chunk_buffer.h"
+#include "metricmap/io/input_file.h"
 
 namespace metricmap {
 
@@ -103,8 +104,7 @@ struct Channel {
 
 class McapBag : public BagReader {
  public:
-  explicit McapBag(const std::string& path) : path_(path), in_(path, std::ios::binary) {
-    if (!in_) throw InputError(path + ": cannot open");
+  explicit McapBag(const std::string& path) : path_(path), in_(openRegularFile(path)) {
     in_.seekg(0, std::ios::end);
     size_ = static_cast<std::uint64_t>(in_.tellg());
     char m[8];

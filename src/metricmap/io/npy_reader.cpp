@@ -4,7 +4,9 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <sstream>
 
+#include "metricmap/common/float_range.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/input_file.h"
 
@@ -109,6 +111,14 @@ NpyArray readNpyPoints(const std::string& path) {
       a.values[i] = f;
     } else {
       std::memcpy(&a.values[i], data + 8 * i, 8);
+      // x y z and intensity become floats: a value no float holds is refused, not made inf
+      if (i % a.cols < 4 && beyondFloatRange(a.values[i])) {
+        std::ostringstream msg;
+        msg << path << ": row " << i / a.cols << " column " << i % a.cols << " ("
+            << "xyzi"[i % a.cols] << ") holds " << a.values[i]
+            << ", beyond the float range (+-3.40282e+38) points are stored in";
+        throw InputError(msg.str());
+      }
     }
   }
   return a;

@@ -18,7 +18,7 @@ struct NpyArray {
 /// \brief Read a 2-D float32/float64 .npy array with at least 3 columns.
 /// \throws InputError naming the file for a bad magic, version, header, dtype (big-endian,
 /// integer, object), Fortran order, a shape that is not (N, C>=3) or data shorter or longer than
-/// the shape says
+/// the shape says, or a finite float64 x, y, z or intensity beyond the float range
 NpyArray readNpyPoints(const std::string& path);
 
 }  // namespace metricmap

@@ -156,6 +156,11 @@ void parseHeader(const std::string& path, std::istream& in, PcdHeader& h) {
     h.width = h.points;
     h.height = 1;
   }
+  if (have_points && h.points > 0 && h.width == 0 && h.height == 0) {
+    h.width = h.points;
+    h.height = 1;
+    h.zero_dimensions = true;
+  }
   if (!have_points) h.points = h.width * h.height;
   if (h.width * h.height != h.points) {
     fail(path, "PCD header: WIDTH x HEIGHT (" + std::to_string(h.width) + " x " +

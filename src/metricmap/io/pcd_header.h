@@ -25,6 +25,9 @@ struct PcdHeader {
   std::uint64_t values_per_point = 0;
   std::string ascii_body;      ///< ascii only: the well-formed point lines (at most `points`)
   bool has_viewpoint = false;  ///< a VIEWPOINT line was present
+  /// WIDTH 0 HEIGHT 0 with POINTS n > 0 (written by real pipelines; Open3D reads it, PCL does
+  /// not): read as an unorganised cloud, width n, height 1
+  bool zero_dimensions = false;
   double viewpoint[7] = {0, 0, 0, 1, 0, 0, 0};  ///< tx ty tz qw qx qy qz
 };
 

@@ -65,6 +65,12 @@ void readPcd(const std::string& path, pcl::PCLPointCloud2& blob, LoadReport& rep
   report.has_viewpoint = h.has_viewpoint;
   for (int i = 0; i < 7; ++i) report.viewpoint[i] = h.viewpoint[i];
   report.format = "pcd " + h.data;
+  if (h.zero_dimensions) {
+    report.warnings.push_back(path + ": header says WIDTH 0 HEIGHT 0 but POINTS " +
+                              std::to_string(h.points) + ": read as an unorganised cloud of " +
+                              std::to_string(h.points) + " points (WIDTH " +
+                              std::to_string(h.points) + " HEIGHT 1 would say so)");
+  }
   // The body as PCL decodes it, then the cloud (up to 48 bytes a point).
   checkMemory(h.points, h.point_bytes + 48, path + " (" + std::to_string(h.points) + " points)");
   layout(path, h, blob);

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <sstream>
 #include <vector>
 
+#include "metricmap/common/float_range.h"
 #include "metricmap/common/format_number.h"
 #include "metricmap/common/memory_budget.h"
 
@@ -12,6 +14,8 @@ namespace metricmap {
 namespace {
 
 constexpr double kMaxSweepSeconds = 10.0;
+/// The largest |beam angle| a LaserScan may give (rad): two turns either way.
+constexpr double kMaxBeamAngle = 4.0 * 3.14159265358979323846;
 
 struct Field {
   std::string name;
@@ -178,18 +182,31 @@ CloudMessage decodePointCloud2(const std::uint8_t* data, std::size_t size,
   for (std::uint32_t row = 0; row < out.height; ++row) {
     for (std::uint32_t col = 0; col < out.width; ++col) {
       const std::uint8_t* p = bytes + std::size_t(row) * row_step + std::size_t(col) * point_step;
+      const double xyz[3] = {value(p + x->offset, x->datatype, swap),
+                             value(p + y->offset, y->datatype, swap),
+                             value(p + z->offset, z->datatype, swap)};
+      const double level = intensity ? value(p + intensity->offset, intensity->datatype, swap) : 0;
+      // Points are stored as float: a finite value no float holds is refused, not made inf
+      for (int a = 0; a < 4; ++a) {
+        const double v = a < 3 ? xyz[a] : level;
+        if (beyondFloatRange(v)) {
+          std::ostringstream msg;
+          msg << "point " << std::uint64_t(row) * out.width + col << ": "
+              << (a < 3 ? std::string(1, "xyz"[a]) : std::string("intensity")) << " = " << v
+              << " is beyond the float range (+-3.40282e+38) points are stored in";
+          r.fail(msg.str());
+        }
+      }
       pcl::PointXYZ q;
-      q.x = static_cast<float>(value(p + x->offset, x->datatype, swap));
-      q.y = static_cast<float>(value(p + y->offset, y->datatype, swap));
-      q.z = static_cast<float>(value(p + z->offset, z->datatype, swap));
+      q.x = static_cast<float>(xyz[0]);
+      q.y = static_cast<float>(xyz[1]);
+      q.z = static_cast<float>(xyz[2]);
       if (!(std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z))) {
         ++c.nonfinite_dropped;
         continue;
       }
       c.points.push_back(q);
-      if (intensity)
-        c.intensity.push_back(
-            static_cast<float>(value(p + intensity->offset, intensity->datatype, swap)));
+      if (intensity) c.intensity.push_back(static_cast<float>(level));
       if (time) c.point_times.push_back(value(p + time->offset, time->datatype, swap) * time_scale);
     }
   }
@@ -226,6 +243,15 @@ LaserMessage decodeLaserScan(const std::uint8_t* data, std::size_t size,
   const std::uint32_t n = r.sequenceLength(4);
   if (!std::isfinite(angle_min) || !std::isfinite(angle_increment))
     r.fail("angle_min or angle_increment is not finite");
+  // Beam angles within two turns either way: beyond, a float angle no longer names a direction
+  // (at 1e30 its spacing is 7e22 rad) and a sweep of n beams is not a scan.
+  const double last = double(angle_min) + double(n == 0 ? 0 : n - 1) * double(angle_increment);
+  if (!(std::abs(double(angle_min)) <= kMaxBeamAngle && std::abs(last) <= kMaxBeamAngle)) {
+    std::ostringstream msg;
+    msg << "beam angles from angle_min " << angle_min << " by angle_increment " << angle_increment
+        << " reach " << last << " rad, beyond +-4 pi";
+    r.fail(msg.str());
+  }
   out.scan.angles.resize(n);
   out.scan.ranges.resize(n);
   for (std::uint32_t k = 0; k < n; ++k) {

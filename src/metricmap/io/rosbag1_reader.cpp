@@ -11,6 +11,7 @@
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/chunk_buffer.h"
+#include "metricmap/io/input_file.h"
 
 namespace metricmap {
 namespace {
@@ -72,8 +73,7 @@ struct Connection {
 
 class Rosbag1 : public BagReader {
  public:
-  explicit Rosbag1(const std::string& path) : path_(path), in_(path, std::ios::binary) {
-    if (!in_) throw InputError(path + ": cannot open");
+  explicit Rosbag1(const std::string& path) : path_(path), in_(openRegularFile(path)) {
     in_.seekg(0, std::ios::end);
     size_ = static_cast<std::uint64_t>(in_.tellg());
     char m[kMagicSize];

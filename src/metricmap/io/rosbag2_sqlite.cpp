@@ -8,6 +8,7 @@
 
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/exceptions.h"
+#include "metricmap/io/input_file.h"
 
 namespace metricmap {
 namespace {
@@ -47,6 +48,7 @@ class Statement {
 class SqliteBag : public BagReader {
  public:
   explicit SqliteBag(const std::string& path) : path_(path) {
+    requireRegularFile(path);  // sqlite3 would block opening a FIFO
     // Read-only and immutable: no journal, no lock files beside a bag on read-only media.
     std::string uri = "file:";
     for (unsigned char c : path) {

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <sstream>
 
 #include <pcl/PCLPointCloud2.h>
 
+#include "metricmap/common/float_range.h"
 #include "metricmap/common/format_number.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
@@ -183,9 +185,16 @@ ScanFile fromBlob(const std::string& path, const pcl::PCLPointCloud2& blob) {
       continue;
     }
     out.points.push_back(q);
-    if (intensity)
-      out.intensity.push_back(
-          static_cast<float>(readValue(p + intensity->offset, intensity->datatype)));
+    if (intensity) {
+      const double level = readValue(p + intensity->offset, intensity->datatype);
+      if (beyondFloatRange(level)) {
+        std::ostringstream msg;
+        msg << path << ": point " << i << ": intensity " << level
+            << " is beyond the float range (+-3.40282e+38) points are stored in";
+        throw InputError(msg.str());
+      }
+      out.intensity.push_back(static_cast<float>(level));
+    }
     if (time) out.point_times.push_back(readValue(p + time->offset, time->datatype) * time_scale);
   }
   return out;

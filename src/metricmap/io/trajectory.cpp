@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -164,7 +165,18 @@ std::string formatKittiPoses(const std::vector<Eigen::Isometry3d>& poses) {
   return text;
 }
 
+namespace {
+
+/// What the readers check of every pose (checkRigidTransform): a writer refuses what they would.
+void requireReadable(const Trajectory& trajectory) {
+  for (std::size_t i = 0; i < trajectory.size(); ++i)
+    checkRigidTransform(trajectory.poses[i].matrix(), "pose " + std::to_string(i));
+}
+
+}  // namespace
+
 std::string formatKittiTrajectory(const Trajectory& trajectory) {
+  requireReadable(trajectory);
   return formatKittiPoses(trajectory.poses);
 }
 
@@ -174,7 +186,9 @@ std::string formatTumTrajectory(const Trajectory& trajectory) {
                                 " stamps for " + std::to_string(trajectory.poses.size()) +
                                 " poses");
   }
+  requireReadable(trajectory);
   std::string text;
+  double previous = 0.0;
   for (std::size_t i = 0; i < trajectory.size(); ++i) {
     const Eigen::Isometry3d& pose = trajectory.poses[i];
     Eigen::Quaterniond q(pose.linear());
@@ -186,6 +200,17 @@ std::string formatTumTrajectory(const Trajectory& trajectory) {
     char line[512];
     std::snprintf(line, sizeof line, "%.9f %.9e %.9e %.9e %.9e %.9e %.9e %.9e\n", stamp, t.x(),
                   t.y(), t.z(), q.x(), q.y(), q.z(), q.w());
+    // The reader takes stamps that increase strictly as written (to 1e-9 s)
+    const double written = std::strtod(line, nullptr);
+    if (!std::isfinite(stamp) || (i > 0 && !(written > previous))) {
+      throw std::invalid_argument(
+          "TUM trajectory: stamp " + std::to_string(i) + " (" + formatNumber(stamp) + ") " +
+          (std::isfinite(stamp)
+               ? "is not after the one before (" + formatNumber(trajectory.stamps[i - 1]) +
+                     ") as written to 1e-9 s; stamps must increase strictly"
+               : "is not finite"));
+    }
+    previous = written;
     text += line;
   }
   return text;

@@ -47,12 +47,15 @@ Trajectory readTrajectoryFile(const std::string& path,
 
 /// \brief The trajectory in KITTI form: the row-major 3x4 [R|t] of each pose, `%.9e`, one line
 /// per pose; stamps are not written (KITTI keeps them in a separate times.txt).
+/// \throws std::invalid_argument for a pose that is not a rigid transform (checkRigidTransform)
 std::string formatKittiTrajectory(const Trajectory& trajectory);
 
 /// \brief The trajectory in TUM form, "stamp tx ty tz qx qy qz qw" per line (stamp `%.9f`,
 /// the rest `%.9e`, quaternion normalised with qw >= 0). A trajectory without stamps is written
 /// with its pose index (0, 1, 2, ...) as the stamp.
-/// \throws std::invalid_argument when the trajectory has stamps but not one per pose
+/// \throws std::invalid_argument when the trajectory has stamps but not one per pose, a stamp
+/// that is not finite or not above the one before as written (what readTrajectoryFile
+/// refuses), or a pose that is not a rigid transform (checkRigidTransform)
 std::string formatTumTrajectory(const Trajectory& trajectory);
 
 /// \brief A time-stamp file: one finite number per line (seconds), blank lines and '#'

@@ -32,6 +32,17 @@ std::vector<PoseRelation> readRelations(const std::string& path) {
       os << detail::lineWhere(path, n) << ": translation beyond " << kMaxTranslation << " m";
       throw InputError(os.str());
     }
+    for (int i = 5; i < 8; ++i) {
+      if (!(std::abs(v[i]) <= kMaxAngle)) {
+        std::ostringstream os;
+        os << detail::lineWhere(path, n) << ": "
+           << (i == 5   ? "roll"
+               : i == 6 ? "pitch"
+                        : "yaw")
+           << " '" << quoteForMessage(tokens[i]) << "' is beyond " << kMaxAngle << " rad";
+        throw InputError(os.str());
+      }
+    }
     if (v[0] == v[1]) {
       throw InputError(detail::lineWhere(path, n) + ": t1 and t2 are the same stamp ('" +
                        quoteForMessage(tokens[0]) + "'): a relation joins two poses");

@@ -15,6 +15,9 @@ namespace {
 
 constexpr std::int64_t kCellLimit = std::int64_t{1} << 30;
 constexpr double kFar = std::numeric_limits<double>::max();  // OctoMap's "no crossing"
+/// Below this on both axes (m) an end's float offset from the origin squares to less than the
+/// smallest normal float: the walk could not find its direction.
+constexpr float kAtOrigin = 1e-18f;
 constexpr float kUnknown = std::numeric_limits<float>::quiet_NaN();
 
 /// OctoMap's coordToKey in the plane: floor(coordinate * (1 / resolution)) in double.
@@ -98,8 +101,10 @@ void LogOddsGrid2D::growTo(std::int64_t i_lo, std::int64_t j_lo, std::int64_t i_
   std::ostringstream what;
   what << "the 2D occupancy grid: " << w << " x " << h << " cells of " << params_.resolution
        << " m";
-  checkMemory(static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h),
-              sizeof(float) + sizeof(std::uint32_t), what.str());
+  // the old storage lives until the copy is made
+  checkMemoryBeside(static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h),
+                    sizeof(float) + sizeof(std::uint32_t), held_elsewhere_ + memoryBytes(),
+                    what.str());
   std::vector<float> cells(static_cast<std::size_t>(w * h), kUnknown);
   std::vector<std::uint32_t> marks(cells.size(), 0);
   for (std::int64_t r = 0; r < h_; ++r) {
@@ -141,6 +146,9 @@ void LogOddsGrid2D::insertScan(const Eigen::Vector2f& origin,
     const float dx = e.x() - ox, dy = e.y() - oy;
     const double norm = std::sqrt(static_cast<double>(dx * dx + dy * dy + 0.0f * 0.0f));
     End b{e.x(), e.y(), 0, 0, true};
+    // An end within 1e-18 m of the origin is the origin: the walk's float direction would
+    // underflow (squared length 0) and never reach the neighbouring cell it may lie in.
+    if (std::fabs(dx) < kAtOrigin && std::fabs(dy) < kAtOrigin) b = {ox, oy, 0, 0, true};
     if (cut && !(norm <= params_.max_range)) {
       const float fn = static_cast<float>(norm), r = static_cast<float>(params_.max_range);
       b = {ox + dx / fn * r, oy + dy / fn * r, 0, 0, false};

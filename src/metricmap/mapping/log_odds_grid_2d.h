@@ -73,6 +73,15 @@ class LogOddsGrid2D {
   MapServerImage trinaryImage() const;
   MapServerImage probabilityImage() const;
 
+  /// \brief Bytes of the grid's storage (cells and per-scan marks).
+  std::uint64_t memoryBytes() const {
+    return (cells_.capacity() + marks_.capacity()) * 4 +
+           (hit_list_.capacity() + free_list_.capacity()) * sizeof(std::size_t);
+  }
+  /// \brief Bytes held beside this grid by the work it is part of (a SLAM's other submaps):
+  /// the grid grows only while its storage, its copy while growing and these fit the budget.
+  void setMemoryHeldElsewhere(std::uint64_t bytes) { held_elsewhere_ = bytes; }
+
  private:
   void growTo(std::int64_t i_lo, std::int64_t j_lo, std::int64_t i_hi, std::int64_t j_hi);
   std::size_t index(std::int64_t i, std::int64_t j) const {
@@ -90,6 +99,7 @@ class LogOddsGrid2D {
   std::vector<std::size_t> hit_list_, free_list_;
   std::size_t scans_ = 0;
   std::uint32_t stamp_ = 0;
+  std::uint64_t held_elsewhere_ = 0;
 };
 
 }  // namespace metricmap

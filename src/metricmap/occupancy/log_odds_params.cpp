@@ -39,7 +39,10 @@ const std::vector<LogOddsField>& logOddsFields() {
             &LogOddsParams::clamp_max),
       field("occupancy_threshold", "", {0.0, 1.0, true, true},
             "occupied at this probability or more", &LogOddsParams::occupancy_threshold),
-      field("max_range", "m", {0.0, kInf, true, false, false, "(infinity: no cut)"},
+      // Far below 1 mm a cut beam's float direction underflows (its squared length is 0 below
+      // ~1e-19 m), and no sensor measures a range shorter.
+      field("max_range", "m",
+            {kMinLogOddsMaxRange, kInf, false, false, false, "m (infinity: no cut)"},
             "beams are cut here and mark no hit", &LogOddsParams::max_range),
   };
   return fields;

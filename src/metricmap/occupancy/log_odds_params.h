@@ -24,9 +24,13 @@ struct LogOddsParams {
   double clamp_max = 0.971;
   /// \brief A voxel is occupied when its probability is >= this, free otherwise.
   double occupancy_threshold = 0.5;
-  /// \brief Beams longer than this are cut here and mark no hit (> 0; infinity: no cut).
+  /// \brief Beams longer than this are cut here and mark no hit (>= kMinLogOddsMaxRange;
+  /// infinity: no cut).
   double max_range = std::numeric_limits<double>::infinity();
 };
+
+/// \brief The shortest beam cut a map accepts (m): 1 mm, the CLI's smallest range.
+inline constexpr double kMinLogOddsMaxRange = 1e-3;
 
 /// \brief One field of LogOddsParams with its declaration.
 struct LogOddsField {

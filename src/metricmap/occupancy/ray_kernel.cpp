@@ -741,6 +741,9 @@ void walkAll(const float o[3], const Key3& ko, const ScanUpdate& up, double res,
 }
 
 constexpr std::int64_t kDenseWordLimit = std::int64_t{1} << 23;  // 2 x 64 MiB of bits
+/// Below this on every axis (m) an end's float offset from the origin squares to less than the
+/// smallest normal float: the walk could not find its direction.
+constexpr float kAtOrigin = 1e-18f;
 
 }  // namespace
 
@@ -793,7 +796,11 @@ RayCastCounts collectEnds(const RayCastInput& in, const Key3& ko, ScanUpdate& ou
     ScanUpdate::End end;
     if (!cut_enabled || norm <= in.max_range) {
       end.hit = 1;
-      for (int i = 0; i < 3; ++i) end.e[i] = p[i];
+      // An end within 1e-18 m of the origin is the origin: the walk's float direction would
+      // underflow (squared length 0) and never reach the neighbouring voxel it may lie in.
+      const bool at_origin =
+          std::fabs(d[0]) < kAtOrigin && std::fabs(d[1]) < kAtOrigin && std::fabs(d[2]) < kAtOrigin;
+      for (int i = 0; i < 3; ++i) end.e[i] = at_origin ? o[i] : p[i];
     } else {
       ++counts.cut;
       end.hit = 0;

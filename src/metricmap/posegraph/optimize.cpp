@@ -266,6 +266,18 @@ void checkSolverBudget(const Graph& graph) {
 
 }  // namespace
 
+namespace {
+
+/// A graph without edges has nothing to optimise: refused, never reported as converged.
+void requireEdges(std::size_t vertices, std::size_t edges) {
+  if (edges == 0) {
+    throw std::invalid_argument("the graph has " + std::to_string(vertices) +
+                                " vertices and no edge: nothing to optimise");
+  }
+}
+
+}  // namespace
+
 std::uint64_t solverMemoryBytes(const PoseGraph2D& graph) {
   return solverBytes(graph.vertexCount(), graph.edgeCount(), 3, 3, 3, 1);
 }
@@ -286,13 +298,9 @@ PoseGraphOptimizeResult optimize(PoseGraph2D& graph, const PoseGraphOptimizeOpti
   checkSolverBudget(graph);
   Se2Manifold manifold;  // outlives the problem, which does not own it
   Run run(options, kDefaultLossScale2D);
+  requireEdges(graph.vertexCount(), graph.edgeCount());  // after the options' checks
   PoseGraphOptimizeResult result;
   result.initial_chi2 = result.final_chi2 = graph.chi2();
-  if (graph.edgeCount() == 0) {
-    result.termination = PoseGraphTermination::Converged;
-    run.finish(result);
-    return result;
-  }
   const std::size_t n = graph.vertexCount();
   std::vector<double> x(3 * n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -331,13 +339,9 @@ PoseGraphOptimizeResult optimize(PoseGraph3D& graph, const PoseGraphOptimizeOpti
   checkSolverBudget(graph);
   ceres::EigenQuaternionManifold manifold;  // outlives the problem, which does not own it
   Run run(options, kDefaultLossScale3D);
+  requireEdges(graph.vertexCount(), graph.edgeCount());  // after the options' checks
   PoseGraphOptimizeResult result;
   result.initial_chi2 = result.final_chi2 = graph.chi2();
-  if (graph.edgeCount() == 0) {
-    result.termination = PoseGraphTermination::Converged;
-    run.finish(result);
-    return result;
-  }
   const std::size_t n = graph.vertexCount();
   std::vector<double> t(3 * n);
   std::vector<double> q(4 * n);

@@ -78,8 +78,9 @@ std::uint64_t jacobianNonzeros(const PoseGraph3D& graph);
 
 /// \brief Optimise the poses of the non-fixed vertices in place (vertices without edges stay).
 /// Angles of the result are wrapped to [-π, π), quaternions normalised. On Failure the poses are
-/// left as they were. A graph with no edge returns at once (Converged, no iteration).
-/// \throws std::invalid_argument for options out of range
+/// left as they were.
+/// \throws std::invalid_argument for options out of range, or a graph without edges (nothing
+/// to optimise: never reported as converged)
 /// \throws CapacityError when solverMemoryBytes() is beyond the memory budget (checked before
 /// the problem is built)
 PoseGraphOptimizeResult optimize(PoseGraph2D& graph, const PoseGraphOptimizeOptions& options = {});

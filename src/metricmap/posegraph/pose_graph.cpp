@@ -7,6 +7,7 @@
 #include <Eigen/Cholesky>
 
 #include "metricmap/common/format_number.h"
+#include "metricmap/common/rigid_transform.h"
 #include "metricmap/posegraph/edge_error.h"
 
 namespace metricmap {
@@ -20,12 +21,26 @@ bool finitePose(const Pose3D& p) {
   return p.translation.allFinite() && p.rotation.coeffs().allFinite();
 }
 
+void checkTranslation(double v) {
+  if (!(std::abs(v) <= kMaxTranslation)) {
+    throw std::invalid_argument("a translation of " + formatNumber(v) + " m is beyond " +
+                                formatNumber(kMaxTranslation) + " m");
+  }
+}
+
 void checkPose(const Pose2D& p) {
   if (!finitePose(p)) throw std::invalid_argument("a pose value is not finite");
+  checkTranslation(p.x);
+  checkTranslation(p.y);
+  if (!(std::abs(p.theta) <= kMaxAngle)) {
+    throw std::invalid_argument("theta " + formatNumber(p.theta) + " rad is beyond " +
+                                formatNumber(kMaxAngle) + " rad");
+  }
 }
 
 void checkPose(const Pose3D& p) {
   if (!finitePose(p)) throw std::invalid_argument("a pose value is not finite");
+  for (int i = 0; i < 3; ++i) checkTranslation(p.translation[i]);
   const double norm = p.rotation.norm();
   if (!(std::abs(norm - 1.0) <= kPoseQuaternionNormTolerance)) {
     throw std::invalid_argument("quaternion (qx qy qz qw) = (" + formatNumber(p.rotation.x()) +

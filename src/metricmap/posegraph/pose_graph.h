@@ -111,8 +111,9 @@ class PoseGraph {
   /// \brief The sum of edgeChi2 over all edges.
   double chi2() const;
 
-  /// \brief \throws std::invalid_argument unless every value is finite and (SE(3)) the
-  /// quaternion's norm is within kPoseQuaternionNormTolerance of 1.
+  /// \brief \throws std::invalid_argument unless every value is finite, every translation
+  /// component within kMaxTranslation, (SE(2)) theta within kMaxAngle and (SE(3)) the
+  /// quaternion's norm within kPoseQuaternionNormTolerance of 1.
   static void validatePose(const Pose& pose);
   /// \brief \throws std::invalid_argument unless every entry is finite, the matrix is symmetric
   /// and it is positive definite (its Cholesky factorisation succeeds).

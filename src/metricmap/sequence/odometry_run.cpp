@@ -95,7 +95,9 @@ OdometryRun runOdometry(ScanSource& source, const OdometryRunOptions& options,
     bool used = false;
     const std::vector<double> times = sweepFractions(scan, options.deskew, used);
     if (used != run.deskewed) {
-      throw InputError(scan.name + ": per-point times missing, unlike the first scan's");
+      throw InputError(scan.name + (used
+                                        ? ": per-point times present, where the first scan had none"
+                                        : ": per-point times missing, unlike the first scan's"));
     }
     t = std::chrono::steady_clock::now();
     OdometryFrame f;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace metricmap {
@@ -61,7 +62,18 @@ LidarOdometryConfig applyProfile(LidarOdometryConfig config, const SensorProfile
     config.max_threshold = profile.max_threshold;
     if (profile.convergence > 0.0) config.convergence = profile.convergence;
   }
-  if (!(config.min_range < config.max_range)) config.min_range = 0.0;
+  if (!(config.min_range < config.max_range)) {
+    // Only a chosen minimum yields to the window's maximum; a given one is never replaced.
+    if (!request.min_range) {
+      std::ostringstream msg;
+      msg << "min_range " << config.min_range << " m (given) is not below the max_range "
+          << config.max_range << " m "
+          << (request.max_range ? "chosen from the first scan's ranges" : "given")
+          << ": give a max_range above it";
+      throw std::invalid_argument(msg.str());
+    }
+    config.min_range = 0.0;
+  }
   return config;
 }
 

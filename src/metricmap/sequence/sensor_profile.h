@@ -45,7 +45,9 @@ struct SensorProfile {
 /// \throws std::invalid_argument when the scan has fewer than 100 finite points at a range > 0
 SensorProfile profileScan(const std::vector<Eigen::Vector3d>& points);
 
-/// \brief `config` with the requested values replaced by the profile's.
+/// \brief `config` with the requested values replaced by the profile's. A chosen min_range at
+/// or above max_range becomes 0; a given one is kept.
+/// \throws std::invalid_argument when a given min_range is not below max_range
 LidarOdometryConfig applyProfile(LidarOdometryConfig config, const SensorProfile& profile,
                                  const SensorProfileRequest& request);
 

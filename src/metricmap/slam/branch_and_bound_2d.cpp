@@ -41,7 +41,8 @@ void doubleLevel(const std::vector<std::uint8_t>& prev, std::int64_t pw, std::in
 
 }  // namespace
 
-BranchAndBoundMatcher2D::BranchAndBoundMatcher2D(const MatchGrid& grid, int depth)
+BranchAndBoundMatcher2D::BranchAndBoundMatcher2D(const MatchGrid& grid, int depth,
+                                                 std::uint64_t held)
     : i0_(grid.minI()), j0_(grid.minJ()), res_(grid.resolution()) {
   if (depth < 1 || depth > 16)
     throw std::invalid_argument("branch-and-bound depth must be in 1..16");
@@ -52,7 +53,7 @@ BranchAndBoundMatcher2D::BranchAndBoundMatcher2D(const MatchGrid& grid, int dept
     const std::uint64_t pad = (std::uint64_t{1} << d) - 1;
     total += (static_cast<std::uint64_t>(w) + pad) * (static_cast<std::uint64_t>(h) + pad);
   }
-  checkMemory(total, 1, "the loop-closure grids of a submap");
+  checkMemoryBeside(total, 1, held, "the loop-closure grids of a submap");
   levels_.resize(static_cast<std::size_t>(depth));
   Level& base = levels_[0];
   base.w = w;

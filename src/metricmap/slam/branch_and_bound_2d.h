@@ -23,8 +23,9 @@ namespace metricmap {
 class BranchAndBoundMatcher2D {
  public:
   /// \brief Levels 0..depth-1 of `grid` (1 <= depth <= 16).
-  /// \throws CapacityError when they do not fit in the memory budget
-  BranchAndBoundMatcher2D(const MatchGrid& grid, int depth);
+  /// \throws CapacityError when they do not fit in the memory budget beside `held` bytes
+  /// already in use (the SLAM's maps)
+  BranchAndBoundMatcher2D(const MatchGrid& grid, int depth, std::uint64_t held = 0);
 
   /// \brief The best pose initial + (dx, dy, dθ), |dx|, |dy| <= linear_window (whole cells),
   /// |dθ| <= angular_window in steps of angularSearchStep, if its score (mean probability in

@@ -97,6 +97,7 @@ struct Slam2D::Impl {
   PoseGraph2D graph;
   PoseGraph2D::Information information, loop_information;
   std::vector<Node> nodes;
+  std::uint64_t node_bytes = 0;  ///< the nodes' beams and points
   std::vector<Submap> submaps;
   std::deque<std::size_t> active;       ///< submap indices, oldest first (at most 2)
   std::vector<Pose2D> local;            ///< per scan
@@ -169,6 +170,7 @@ struct Slam2D::Impl {
   }
 
   void optimizeGraph(int iterations) {
+    if (graph.edgeCount() == 0) return;  // one node: nothing to optimise
     const auto t0 = Clock::now();
     PoseGraphOptimizeOptions o;
     o.max_iterations = iterations;
@@ -309,6 +311,17 @@ struct Slam2D::Impl {
     return match;
   }
 
+  /// What the run holds in its large structures: submap grids, their loop-closure levels and
+  /// the nodes' beams. Every grid growth is checked against the budget beside it.
+  std::uint64_t heldBytes() const {
+    std::uint64_t total = 0;
+    for (const Submap& s : submaps) {
+      total += s.grid->memoryBytes();
+      if (s.matcher) total += s.matcher->bytes();
+    }
+    return total + node_bytes;
+  }
+
   void insertNode(std::size_t n) {
     const auto t0 = Clock::now();
     const Node& node = nodes[n];
@@ -327,6 +340,7 @@ struct Slam2D::Impl {
         node.local, Eigen::Vector2f(static_cast<float>(sensor.x), static_cast<float>(sensor.y)));
     for (std::size_t s : active) {
       Submap& sub = submaps[s];
+      sub.grid->setMemoryHeldElsewhere(heldBytes() - sub.grid->memoryBytes());
       sub.grid->insertScan(origin, ends);
       sub.centre_local = (sub.centre_local * static_cast<double>(sub.nodes) +
                           Eigen::Vector2d(node.local.x, node.local.y)) /
@@ -336,8 +350,8 @@ struct Slam2D::Impl {
     }
     if (submaps[active.front()].nodes >= 2 * config.scans_per_submap) {
       Submap& done = submaps[active.front()];
-      done.matcher = std::make_unique<BranchAndBoundMatcher2D>(MatchGrid(*done.grid, table),
-                                                               config.branch_and_bound_depth);
+      done.matcher = std::make_unique<BranchAndBoundMatcher2D>(
+          MatchGrid(*done.grid, table), config.branch_and_bound_depth, heldBytes());
       active.pop_front();
       stats.finished_submaps++;
     }
@@ -438,6 +452,7 @@ void Slam2D::addScan(const LaserScan& scan, const std::optional<Pose2D>& odometr
   node.local = pose;
   d.last_node_stamp = stamp;
   const std::size_t n = d.nodes.size();
+  d.node_bytes += (node.ends.capacity() + node.points.capacity()) * sizeof(Eigen::Vector2f);
   d.nodes.push_back(std::move(node));
   d.node_scans.push_back(d.nodes[n].scan);
   d.scan_node.push_back(n);
@@ -461,6 +476,7 @@ void Slam2D::finish() {
   if (!d.loops.empty()) d.optimizeGraph(d.config.final_iterations);
   const auto t0 = Clock::now();
   d.map = std::make_unique<LogOddsGrid2D>(d.config.map);
+  d.map->setMemoryHeldElsewhere(d.heldBytes());
   std::vector<Eigen::Vector2f> ends;
   for (std::size_t n = 0; n < d.nodes.size(); ++n) {
     const Pose2D g = d.globalOf(n);
