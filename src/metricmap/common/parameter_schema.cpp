@@ -15,7 +15,17 @@ std::string shortest(double v) {
     std::snprintf(buf, sizeof buf, "%.*g", precision, v);
     if (std::strtod(buf, nullptr) == v) break;
   }
-  return buf;
+  // 1e+06 -> 1e6, 1e-05 -> 1e-5: exponents as a person writes them
+  std::string text = buf;
+  const std::size_t e = text.find('e');
+  if (e != std::string::npos) {
+    std::string mantissa = text.substr(0, e), exponent = text.substr(e + 1);
+    const bool negative = exponent[0] == '-';
+    if (exponent[0] == '+' || negative) exponent.erase(0, 1);
+    while (exponent.size() > 1 && exponent[0] == '0') exponent.erase(0, 1);
+    text = mantissa + "e" + (negative ? "-" : "") + exponent;
+  }
+  return text;
 }
 
 }  // namespace

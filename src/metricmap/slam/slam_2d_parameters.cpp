@@ -28,9 +28,8 @@ struct Entry {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr ParameterRange kPositive{0.0, kInf, true};      // finite, > 0
 constexpr ParameterRange kNonNegative{0.0, kInf, false};  // finite, >= 0
-constexpr double kMaxCount = 2147483647.0;  // what setSlam2DParameter reads into a count
-constexpr ParameterRange kAtLeastOne{1.0, kMaxCount};
-constexpr ParameterRange kAnyCount{0.0, kMaxCount};
+constexpr ParameterRange kAtLeastOne{1.0, kInf};
+constexpr ParameterRange kAnyCount{0.0, kInf};
 constexpr ParameterRange kUnit{0.0, 1.0, false, false};
 constexpr ParameterRange kHalfTurn{0.0, 180.0, true, false};
 
@@ -142,7 +141,7 @@ const Entry kSlamFields[] = {
     {"loop_search_points",
      &C::loop_search_points,
      "",
-     {10.0, kMaxCount},
+     {10.0, kInf},
      "points the loop search scores, at most"},
     {"branch_and_bound_depth",
      &C::branch_and_bound_depth,
