@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include "arrays.h"
+#include "metricmap/common/memory_budget.h"
 #include "metricmap/mapping/bin_points.h"
 
 namespace metricmap::python {
@@ -13,16 +14,26 @@ namespace {
 
 template <typename T>
 py::tuple run(const py::array& xyz, const BinPointsParams& params) {
-  CArray<T> a(xyz);
-  const py::ssize_t nd = a.ndim();
-  std::vector<py::ssize_t> batch(a.shape(), a.shape() + nd - 3);
-  const std::size_t h = static_cast<std::size_t>(a.shape(nd - 3));
-  const std::size_t w = static_cast<std::size_t>(a.shape(nd - 2));
-  const std::size_t channels = static_cast<std::size_t>(a.shape(nd - 1));
+  const py::ssize_t nd = xyz.ndim();
+  std::vector<py::ssize_t> batch(xyz.shape(), xyz.shape() + nd - 3);
+  const std::size_t h = static_cast<std::size_t>(xyz.shape(nd - 3));
+  const std::size_t w = static_cast<std::size_t>(xyz.shape(nd - 2));
+  const std::size_t channels = static_cast<std::size_t>(xyz.shape(nd - 1));
   std::size_t frames = 1;
   for (py::ssize_t b : batch) frames *= static_cast<std::size_t>(b);
   const py::ssize_t m = static_cast<py::ssize_t>(params.map_size);
   const py::ssize_t nz = static_cast<py::ssize_t>(params.z_bins.size() + 1);
+  // priced before any array exists: counts (8 bytes a cell and bin), valid (1 byte a pixel), and
+  // a C-ordered copy of the input when it is not one already (a broadcast view)
+  __extension__ typedef unsigned __int128 U128;  // GCC/Clang; __extension__: no -Wpedantic
+  const U128 words = static_cast<U128>(frames) * static_cast<std::uint64_t>(m) *
+                         static_cast<std::uint64_t>(m) * static_cast<std::uint64_t>(nz) +
+                     (static_cast<U128>(frames) * h * w * (1 + channels * sizeof(T))) / 8 + 1;
+  const std::uint64_t cap = ~std::uint64_t{0} / 16;  // beyond any budget
+  checkMemory(words > cap ? cap : static_cast<std::uint64_t>(words), 8,
+              "bin_points: " + std::to_string(frames) + " frame(s) of " + std::to_string(m) +
+                  " x " + std::to_string(m) + " x " + std::to_string(nz) + " bins");
+  CArray<T> a(xyz);
   std::vector<py::ssize_t> counts_shape = batch, valid_shape = batch;
   counts_shape.insert(counts_shape.end(), {m, m, nz});
   valid_shape.insert(valid_shape.end(), {py::ssize_t(h), py::ssize_t(w), 1});

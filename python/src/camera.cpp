@@ -9,6 +9,7 @@
 #include "arrays.h"
 #include "metricmap/camera/camera_intrinsics.h"
 #include "metricmap/camera/depth_to_cloud.h"
+#include "metricmap/common/memory_budget.h"
 #include "metricmap/io/depth_image.h"
 
 namespace metricmap::python {
@@ -61,6 +62,11 @@ void initCamera(py::module_& m) {
                                py::str(d.dtype()).cast<std::string>());
         if (d.ndim() != 2 || d.shape(0) == 0 || d.shape(1) == 0)
           throw py::value_error("depth must have shape (H, W) with H, W > 0");
+        // priced before any copy: the image (2 bytes), the cloud (16) and the array (12) a pixel
+        checkMemory(static_cast<std::uint64_t>(d.shape(0)) * static_cast<std::uint64_t>(d.shape(1)),
+                    2 + 16 + 12,
+                    "depth_to_cloud: a " + std::to_string(d.shape(1)) + " x " +
+                        std::to_string(d.shape(0)) + " depth image");
         CArray<std::uint16_t> c(d);
         DepthImage img;
         img.height = static_cast<int>(c.shape(0));

@@ -6,6 +6,8 @@
 #include <pybind11/stl.h>
 
 #include "arrays.h"
+#include "metricmap/common/float_range.h"
+#include "metricmap/common/format_number.h"
 #include "metricmap/grid/grid_kernel.h"
 
 namespace metricmap::python {
@@ -108,10 +110,14 @@ The array properties are read-only views of the cells held by this object; they 
 
   m.def(
       "grid",
-      [](ArrayLike points, float cell_size, const std::string& origin, unsigned threads) {
-        validateCellSize(cell_size);
+      [](ArrayLike points, double cell_size, const std::string& origin, unsigned threads) {
+        // named as given: 1e39 is not a float, and would be reported as inf
+        if (beyondFloatRange(cell_size) || belowFloatRange(cell_size))
+          throw py::value_error("cell_size " + formatNumber(cell_size) +
+                                " is outside the single-precision range");
+        validateCellSize(static_cast<float>(cell_size));
         GridParams params;
-        params.cell_size = cell_size;
+        params.cell_size = static_cast<float>(cell_size);
         params.origin = parseOrigin(origin);
         params.threads = threads;
         PointsArray p = pointsFromArray(points, "points");

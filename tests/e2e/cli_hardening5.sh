@@ -68,9 +68,9 @@ PY
 for e in mcap db3 bag MCAP; do mkfifo "$in/fifo.$e"; done
 
 # ------------------------------------------------------------------ class: tiny beam cuts
-case_ 1 "max_range must be >= 0.001 m" occupancy "$museo" --resolution 0.1 --max-range 1e-30 --out "$o/x.bt"
-case_ 1 "max_range must be >= 0.001 m" occupancy "$museo" --resolution 0.1 --max-range 1e-23 --out "$o/x.bt"
-case_ 1 "got 0.0005" occupancy "$museo" --resolution 0.1 --max-range 0.0005 --out "$o/x.bt"
+case_ 2 "max_range must be >= 0.001 m (infinity: no cut), got 1e-30" occupancy "$museo" --resolution 0.1 --max-range 1e-30 --out "$o/x.bt"
+case_ 2 "max_range must be >= 0.001 m" occupancy "$museo" --resolution 0.1 --max-range 1e-23 --out "$o/x.bt"
+case_ 2 "got 0.0005" occupancy "$museo" --resolution 0.1 --max-range 0.0005 --out "$o/x.bt"
 case_ 2 "map_max_range must be >= 0.001 m" slam2d "$in/short.clf" --set map_max_range=1e-30 --out-poses "$o/p.tum"
 case_ 2 "map_max_range" slam2d "$in/short.clf" --set map_max_range=1e-23 --out-poses "$o/p.tum"
 check "occupancy with --max-range 0.001 runs" "$MM" occupancy "$museo" --resolution 0.1 --max-range 0.001 --out "$o/x.bt"
@@ -89,8 +89,8 @@ for e in mcap db3 bag MCAP; do
 done
 
 # ------------------------------------------------------------------ class: a given value replaced
-case_ 1 "min_range 50 m (given) is not below the max_range 10 m chosen" odometry "$in/scans" --min-range 50 --out-poses "$o/p.txt"
-case_ 1 "min_range 10 m (given)" odometry "$in/scans" --min-range 10 --out-poses "$o/p.txt"
+case_ 1 "min_range 50 m (given) is not below the max_range 10.0281 m chosen from the first scan's ranges" odometry "$in/scans" --min-range 50 --out-poses "$o/p.txt"
+case_ 1 "min_range 10.03 m (given)" odometry "$in/scans" --min-range 10.03 --out-poses "$o/p.txt"
 case_ 1 "min_range 50 m (given)" map "$in/scans" --poses odometry --min-range 50 --out-cloud "$o/c.pcd"
 case_ 2 "--min-range '2' must be below --max-range '1'" odometry "$in/scans" --min-range 2 --max-range 1 --out-poses "$o/p.txt"
 
@@ -126,7 +126,8 @@ for kind in dir fifo dangling loop dirlink; do
     dirlink) mkdir "$f/target"; ln -s "$f/target" "$f/004.NPY"; what="a directory" ;;
   esac
   case_ 1 "is named like a scan but is $what" odometry "$f" --out-poses "$o/p.txt"
-  case_ 1 "is named like a scan but is $what" info "$f"
+  case_ 1 "is named like a scan but is $what" map "$f" --poses odometry --out-cloud "$o/c.pcd"
+  case_ 1 "is named like a scan but is $what" occupancy "$f" --resolution 0.5 --max-range 20 --out "$o/a.bt"
 done
 
 # ------------------------------------------------------------------ class: a run's memory budget

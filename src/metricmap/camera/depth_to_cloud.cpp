@@ -7,6 +7,7 @@
 
 #include "metricmap/common/float_range.h"
 #include "metricmap/common/format_number.h"
+#include "metricmap/common/memory_budget.h"
 
 namespace metricmap {
 namespace {
@@ -24,6 +25,10 @@ template <typename PointT, typename Fill>
 pcl::PointCloud<PointT> project(const DepthImage& depth, const CameraIntrinsics& k,
                                 double depth_scale, Fill fill) {
   check(depth, k, depth_scale);
+  checkMemory(static_cast<std::uint64_t>(depth.width) * static_cast<std::uint64_t>(depth.height),
+              sizeof(PointT),
+              "the cloud of a " + std::to_string(depth.width) + " x " +
+                  std::to_string(depth.height) + " depth image");
   pcl::PointCloud<PointT> cloud(static_cast<std::uint32_t>(depth.width),
                                 static_cast<std::uint32_t>(depth.height));
   const float nan = std::numeric_limits<float>::quiet_NaN();

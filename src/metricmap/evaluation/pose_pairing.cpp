@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "metricmap/common/format_number.h"
+
 namespace metricmap {
 
 std::size_t nearestStamp(const std::vector<double>& stamps, double t, double max_diff) {
@@ -56,7 +58,7 @@ PosePairs pairPoses(const Trajectory& estimate, const Trajectory& reference, dou
     if (pairs.size() < 2) {
       throw std::invalid_argument(
           std::to_string(pairs.size()) + " pose(s) of the estimate and the reference have time " +
-          "stamps within " + std::to_string(max_time_diff) + " s of each other; 2 or more needed");
+          "stamps within " + formatNumber(max_time_diff) + " s of each other; 2 or more needed");
     }
     return pairs;
   }

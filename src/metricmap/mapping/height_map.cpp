@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "metricmap/common/rigid_transform.h"
 #include "metricmap/detail/fast_floor.h"
 #include "metricmap/exceptions.h"
 
@@ -39,6 +40,8 @@ HeightMap::HeightMap(const HeightMapParams& params) : params_(params) {
 
 void HeightMap::addFrame(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                          const Eigen::Isometry3d& to_map) {
+  // a reflection or a scale is no pose: the points would land mirrored or stretched
+  checkRigidTransform(to_map.matrix(), "the frame's pose");
   const Eigen::Matrix3f r = to_map.linear().cast<float>();
   const Eigen::Vector3f t = to_map.translation().cast<float>();
   const auto n = static_cast<std::int64_t>(params_.map_size);

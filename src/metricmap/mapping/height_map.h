@@ -44,6 +44,7 @@ class HeightMap {
 
   /// \brief Add a frame: points in its own frame, `to_map` moves them into the map frame.
   /// Every frame adds to the counts (+=).
+  /// \throws std::invalid_argument unless `to_map` is a rigid transform (checkRigidTransform)
   void addFrame(const pcl::PointCloud<pcl::PointXYZ>& cloud, const Eigen::Isometry3d& to_map);
 
   std::size_t size() const { return params_.map_size; }

@@ -65,6 +65,7 @@ void validateScanMapperConfig(const ScanMapperConfig& c) {
                 str(o.band_max));
     validateLogOddsParams(o.params);
   }
+  if (c.occupancy) validateLogOddsParams(*c.occupancy);
 }
 
 pcl::PointCloud<pcl::PointXYZ> rangeBand(const pcl::PointCloud<pcl::PointXYZ>& scan,
