@@ -1,5 +1,6 @@
 #include "evaluate_report.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <utility>
 
@@ -24,6 +25,23 @@ std::string infoLine(const LoadedTrajectory& l) {
 nlohmann::json statsJson(const ErrorStatistics& s) {
   return {{"count", s.count}, {"rmse", s.rmse}, {"mean", s.mean}, {"median", s.median},
           {"std", s.stddev},  {"min", s.min},   {"max", s.max}};
+}
+
+/// Positions in `e`'s used relations, largest `values` first (ties: input order), at most `n`.
+std::vector<std::size_t> worstFirst(const std::vector<double>& values, std::size_t n) {
+  std::vector<std::size_t> order(values.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return values[a] > values[b]; });
+  order.resize(std::min(n, order.size()));
+  return order;
+}
+
+/// A time stamp to the microsecond (log stamps are seconds since 1970).
+std::string stamp(double t) {
+  char s[40];
+  std::snprintf(s, sizeof s, "%.6f", t);
+  return s;
 }
 
 void addStatsRow(Table& t, const std::string& name, const ErrorStatistics& s) {
@@ -153,6 +171,21 @@ std::string relationsReport(const LoadedTrajectory& est, const RelationsInput& i
           {{"index", k}, {"stamp1", relations[k].stamp1}, {"stamp2", relations[k].stamp2}});
     j["relations"]["skipped_relations"] = skipped;
     for (const auto& [name, v] : rows) j[name] = {{"mean", v->mean}, {"std", v->stddev}};
+    const auto entry = [&](std::size_t u) {
+      const std::size_t k = e.used_relations[u];
+      return nlohmann::json{{"index", k},
+                            {"stamp1", relations[k].stamp1},
+                            {"stamp2", relations[k].stamp2},
+                            {"translation_m", e.translation[u]},
+                            {"rotation_deg", e.rotation_deg[u]}};
+    };
+    nlohmann::json per = nlohmann::json::array();
+    for (std::size_t u = 0; u < e.used; ++u) per.push_back(entry(u));
+    j["per_relation"] = per;
+    nlohmann::json by_t = nlohmann::json::array(), by_r = nlohmann::json::array();
+    for (std::size_t u : worstFirst(e.translation, kWorstRelations)) by_t.push_back(entry(u));
+    for (std::size_t u : worstFirst(e.rotation_deg, kWorstRelations)) by_r.push_back(entry(u));
+    j["worst"] = {{"by_translation", by_t}, {"by_rotation", by_r}};
     return j.dump(2) + "\n";
   }
   std::string out =
@@ -166,7 +199,15 @@ std::string relationsReport(const LoadedTrajectory& est, const RelationsInput& i
       ")\n\n";
   Table t({"metric", "mean", "std"});
   for (const auto& [name, v] : rows) t.addRow({name, num(v->mean), num(v->stddev)});
-  return out + t.render(TableStyle::Aligned);
+  out += t.render(TableStyle::Aligned);
+  Table worst({"relation", "stamp1", "stamp2", "translation_m", "rotation_deg"});
+  for (std::size_t u : worstFirst(e.translation, kWorstRelations)) {
+    const std::size_t k = e.used_relations[u];
+    worst.addRow({std::to_string(k), stamp(relations[k].stamp1), stamp(relations[k].stamp2),
+                  num(e.translation[u]), num(e.rotation_deg[u])});
+  }
+  return out + "\nworst relations by translational error (--format json: every relation):\n" +
+         worst.render(TableStyle::Aligned);
 }
 
 }  // namespace metricmap::cli

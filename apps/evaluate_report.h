@@ -3,6 +3,7 @@
 /// \brief The reports of `metricmap evaluate`: against a reference trajectory, or the relation
 /// metric; JSON or text tables.
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -37,7 +38,11 @@ struct RelationsInput {
   std::string odometry;  ///< the odometry file, "" without
 };
 
-/// \brief The relation metric of `est` (`format` json, else text).
+/// \brief How many relations the reports list as the worst (by translation, by rotation).
+inline constexpr std::size_t kWorstRelations = 10;
+
+/// \brief The relation metric of `est` (`format` json, else text): mean and std, the worst
+/// relations with their stamps; the JSON also has every used relation's error (per_relation).
 std::string relationsReport(const LoadedTrajectory& est, const RelationsInput& in,
                             const RelationError& e, const std::string& format);
 

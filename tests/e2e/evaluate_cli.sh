@@ -236,13 +236,14 @@ def rpy_matrix(roll, pitch, yaw):
 def check_relations(est_path, rel_path, max_diff, json_path, table_path):
     es, ep = read_traj(est_path)
     es = np.array(es)
-    t_err, r_err, skipped = [], [], 0
+    t_err, r_err, used, skipped = [], [], [], 0
     rels = [list(map(float, l.split())) for l in open(rel_path) if l.split() and not l.startswith('#')]
-    for t1, t2, x, y, z, roll, pitch, yaw in rels:
+    for k, (t1, t2, x, y, z, roll, pitch, yaw) in enumerate(rels):
         i, j = int(np.argmin(np.abs(es - t1))), int(np.argmin(np.abs(es - t2)))
         if abs(es[i] - t1) > max_diff or abs(es[j] - t2) > max_diff:
             skipped += 1
             continue
+        used.append(k)
         G = np.eye(4)
         G[:3, :3] = rpy_matrix(roll, pitch, yaw)
         G[:3, 3] = [x, y, z]
@@ -265,6 +266,21 @@ def check_relations(est_path, rel_path, max_diff, json_path, table_path):
         close(key + ' std', j[key]['std'], np.std(v, ddof=1), 1e-9)
         close('table ' + key + ' mean', float(rows[key][0]), np.mean(v), 1e-5)
         close('table ' + key + ' std', float(rows[key][1]), np.std(v, ddof=1), 1e-5)
+    # Every used relation with its stamps and errors, in input order; the ten worst of each.
+    per = j['per_relation']
+    close('per_relation rows', len(per), len(used), 0)
+    for row, k, te, re_ in zip(per, used, t_err, r_err):
+        close('per_relation index', row['index'], k, 0)
+        close('per_relation stamp1', row['stamp1'], rels[k][0], 1e-12)
+        close('per_relation stamp2', row['stamp2'], rels[k][1], 1e-12)
+        close('per_relation %d translation' % k, row['translation_m'], te, 1e-9, 1e-12)
+        close('per_relation %d rotation' % k, row['rotation_deg'], re_, 1e-9, 1e-9)
+    for key, v in (('by_translation', t_err), ('by_rotation', r_err)):
+        want_order = [used[u] for u in sorted(range(len(v)), key=lambda u: -v[u])[:10]]
+        got = [row['index'] for row in j['worst'][key]]
+        assert got == want_order, 'worst %s: %s, numpy %s' % (key, got, want_order)
+    worst_rows = [l.split() for l in text.split('worst relations')[1].splitlines()[2:] if l.split()]
+    assert [int(r[0]) for r in worst_rows] == [row['index'] for row in j['worst']['by_translation']], 'worst table'
     finish('relations %s on %s, %d used, %d skipped' % (rel_path.split('/')[-1], est_path.split('/')[-1], len(t_err), skipped))
 
 

@@ -101,6 +101,7 @@ RelationError relationError(const Trajectory& estimate, const std::vector<PoseRe
     }
     const Eigen::Isometry3d delta = pi->inverse() * *pj;
     const Eigen::Isometry3d err = r.relative.inverse() * delta;
+    e.used_relations.push_back(k);
     e.translation.push_back(err.translation().norm());
     e.rotation_deg.push_back(rotationAngleDeg(err.linear()));
     t_sq.push_back(e.translation.back() * e.translation.back());

@@ -23,12 +23,13 @@ struct RelationError {
   /// \brief Relation stamps without an estimated pose within max_time_diff, placed by the
   /// odometry from the nearest estimated pose (counted once per stamp).
   std::size_t interpolated = 0;
-  std::vector<double> translation;   ///< per used relation, metres
-  std::vector<double> rotation_deg;  ///< per used relation, degrees
-  MeanAndStd translation_abs;        ///< m
-  MeanAndStd translation_sq;         ///< m^2
-  MeanAndStd rotation_abs_deg;       ///< deg
-  MeanAndStd rotation_sq_deg;        ///< deg^2
+  std::vector<std::size_t> used_relations;  ///< per used relation, its index in the input
+  std::vector<double> translation;          ///< per used relation, metres
+  std::vector<double> rotation_deg;         ///< per used relation, degrees
+  MeanAndStd translation_abs;               ///< m
+  MeanAndStd translation_sq;                ///< m^2
+  MeanAndStd rotation_abs_deg;              ///< deg
+  MeanAndStd rotation_sq_deg;               ///< deg^2
 };
 
 /// \brief The metric of `estimate` over `relations`.

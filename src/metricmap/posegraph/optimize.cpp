@@ -22,6 +22,9 @@ namespace {
 constexpr double kDefaultLossScale2D = 3.3682;  // √11.3449
 constexpr double kDefaultLossScale3D = 4.1002;  // √16.8119
 
+/// Ceres' largest trust-region radius (its default max_trust_region_radius).
+constexpr double kMaxTrustRegionRadius = 1e16;
+
 /// S with Sᵀ S = Ω: the transposed lower Cholesky factor (Ω was checked positive definite).
 template <int Dim>
 Eigen::Matrix<double, Dim, Dim> sqrtInformation(const Eigen::Matrix<double, Dim, Dim>& omega) {
@@ -109,6 +112,11 @@ void checkOptions(const PoseGraphOptimizeOptions& o) {
   nonNegative(o.function_tolerance, "function_tolerance");
   nonNegative(o.gradient_tolerance, "gradient_tolerance");
   nonNegative(o.parameter_tolerance, "parameter_tolerance");
+  if (!(std::isfinite(o.initial_trust_region_radius) && o.initial_trust_region_radius > 0.0 &&
+        o.initial_trust_region_radius <= kMaxTrustRegionRadius)) {
+    throw std::invalid_argument("initial_trust_region_radius must be in (0, 1e16], got " +
+                                formatNumber(o.initial_trust_region_radius));
+  }
 }
 
 std::unique_ptr<ceres::LossFunction> makeLoss(RobustLoss loss, double scale) {
@@ -149,6 +157,8 @@ class Run {
     so.minimizer_type = ceres::TRUST_REGION;
     so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
     so.max_num_iterations = options_.max_iterations;
+    so.initial_trust_region_radius = options_.initial_trust_region_radius;
+    so.max_trust_region_radius = kMaxTrustRegionRadius;
     so.num_threads = options_.threads;
     so.function_tolerance = options_.function_tolerance;
     so.gradient_tolerance = options_.gradient_tolerance;

@@ -176,6 +176,13 @@ struct Slam2D::Impl {
     o.max_iterations = iterations;
     o.loop_loss = RobustLoss::Huber;
     o.loss_scale = std::sqrt(config.loop_max_chi2);
+    // Each optimisation during the run starts from the last one's poses, so a short one costs
+    // nothing lasting: Ceres' damped start and a 1e-6 gain per step keep them short. The final
+    // one runs to the optimum (the options' defaults).
+    if (!final_round) {
+      o.initial_trust_region_radius = 1e4;
+      o.function_tolerance = 1e-6;
+    }
     PoseGraphOptimizeResult r = optimize(graph, o);
     const std::size_t before = loops.size();
     if (final_round) removeLoopOutliers();
@@ -191,7 +198,20 @@ struct Slam2D::Impl {
     stats.optimize_seconds += since(t0);
   }
 
-  void searchLoops(std::size_t n, bool near, bool wide) {
+  /// At the end of the log: the nodes no later node will follow (those of the unfinished
+  /// submaps), one in loop_every_n_nodes, searched in the wide window against every finished
+  /// submap in range that ended wide_min_node_gap nodes before them, whether or not loops were
+  /// closed lately. A revisit of a place seen long before, in the last minutes of a log, is
+  /// otherwise closed only if the periodic wide search happens to run there.
+  void searchEnd() {
+    if (active.empty()) return;
+    const std::size_t first = submaps[active.front()].anchor;
+    for (std::size_t n = first; n < nodes.size(); ++n) {
+      if (n % config.loop_every_n_nodes == 0) searchLoops(n, false, true, true);
+    }
+  }
+
+  void searchLoops(std::size_t n, bool near, bool wide, bool end = false) {
     const auto t0 = Clock::now();
     const Node& node = nodes[n];
     const Pose2D g = globalOf(n);
@@ -211,7 +231,7 @@ struct Slam2D::Impl {
     std::vector<Candidate> near_list, wide_list;
     // The wide search is for a robot that has lost its map: only after a stretch of nodes
     // without any loop closure.
-    const bool lost = n >= last_loop_node + config.wide_idle_nodes;
+    const bool lost = end || n >= last_loop_node + config.wide_idle_nodes;
     for (std::size_t s = 0; s < submaps.size(); ++s) {
       Submap& sub = submaps[s];
       if (!sub.matcher) continue;
@@ -473,6 +493,7 @@ void Slam2D::finish() {
   d.finished = true;
   if (d.nodes.empty()) throw std::invalid_argument("no scan was added");
   d.final_round = true;
+  d.searchEnd();
   if (!d.loops.empty()) d.optimizeGraph(d.config.final_iterations);
   const auto t0 = Clock::now();
   d.map = std::make_unique<LogOddsGrid2D>(d.config.map);
