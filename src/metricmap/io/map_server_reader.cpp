@@ -226,4 +226,21 @@ Map2D loadMapServer(const std::string& yaml_path) {
   return mapFromGrey(grey, width, height, y);
 }
 
+MapServerImage mapServerImage(const Map2D& map) {
+  MapServerImage image;
+  image.width = map.width;
+  image.height = map.height;
+  image.resolution = map.resolution;
+  image.pixels.resize(map.cells.size());
+  for (int j = 0; j < map.height; ++j)
+    for (int i = 0; i < map.width; ++i) {
+      const int v = map.at(i, j);
+      image.pixels[static_cast<std::size_t>(map.height - 1 - j) * map.width + i] =
+          v < 0    ? kMapUnknown
+          : v == 0 ? kMapFree
+                   : static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - v / 100.0)));
+    }
+  return image;
+}
+
 }  // namespace metricmap

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "metricmap/common/map_2d.h"
+#include "metricmap/common/map_server_image.h"
 
 namespace metricmap {
 
@@ -43,5 +44,9 @@ Map2D loadMapServer(const std::string& yaml_path);
 /// \brief The cells a map_server image becomes (the rules above); `grey` row 0 at the top.
 Map2D mapFromGrey(const std::vector<std::uint8_t>& grey, int width, int height,
                   const MapServerYaml& yaml);
+
+/// \brief The grey image a Map2D is drawn as (map_server's values back: occupied 0, free 254,
+/// unknown 205, a scale cell v as 255 (1 - v / 100)), with origin (0, 0): the grid frame.
+MapServerImage mapServerImage(const Map2D& map);
 
 }  // namespace metricmap
