@@ -16,9 +16,9 @@ namespace metricmap::cli {
 
 void addSourceOptions(CLI::App& app, SourceOptions& o) {
   // The bag topic a command takes by default: the one kind of scan it reads.
-  o.bag_scans = app.get_name() == "slam2d"     ? "laser"
-                : app.get_name() == "odometry" ? "cloud"
-                                               : "any";
+  o.bag_scans = app.get_name() == "slam2d" || app.get_name() == "localize" ? "laser"
+                : app.get_name() == "odometry"                             ? "cloud"
+                                                                           : "any";
   app.add_option("source", o.path,
                  "Scans: a KITTI odometry root (sequences/), a folder of .pcd/.ply/.bin/.npy "
                  "scans, a .txt list of scans, a CARMEN log (.clf/.log, .gz/.bz2), or a ROS "

@@ -94,8 +94,17 @@ long BranchAndBoundMatcher2D::score(std::size_t l, const Rotated& r, int dx, int
   return sum;
 }
 
+bool BranchAndBoundMatcher2D::Leaves::excluded(const Candidate& c, double res) const {
+  if (exclude == nullptr) return false;
+  const double x = initial.x + c.dx * res, y = initial.y + c.dy * res;
+  const double theta = initial.theta + (c.angle - m) * step;
+  return std::hypot(x - exclude->centre.x, y - exclude->centre.y) <= exclude->distance &&
+         std::fabs(std::remainder(theta - exclude->centre.theta, 2 * 3.14159265358979323846)) <=
+             exclude->angle;
+}
+
 void BranchAndBoundMatcher2D::search(const std::vector<Rotated>& rotated, Candidate* todo,
-                                     std::size_t count, int depth, int window,
+                                     std::size_t count, int depth, int window, const Leaves& leaves,
                                      Candidate& best) const {
   std::sort(todo, todo + count,
             [](const Candidate& a, const Candidate& b) { return a.score > b.score; });
@@ -103,6 +112,7 @@ void BranchAndBoundMatcher2D::search(const std::vector<Rotated>& rotated, Candid
     const Candidate& c = todo[k];
     if (c.score <= best.score) return;  // sorted: nothing after it can do better
     if (depth == 0) {
+      if (leaves.excluded(c, res_)) continue;
       best = c;
       return;
     }
@@ -117,13 +127,13 @@ void BranchAndBoundMatcher2D::search(const std::vector<Rotated>& rotated, Candid
                          score(static_cast<std::size_t>(depth - 1),
                                rotated[static_cast<std::size_t>(c.angle)], dx, dy)};
       }
-    search(rotated, children, n, depth - 1, window, best);
+    search(rotated, children, n, depth - 1, window, leaves, best);
   }
 }
 
 std::optional<ScanMatch2D> BranchAndBoundMatcher2D::match(
     const std::vector<Eigen::Vector2f>& points, const Pose2D& initial, double linear_window,
-    double angular_window, double min_score) const {
+    double angular_window, double min_score, const SearchExclusion2D* exclude) const {
   candidates_ = 0;
   if (points.empty()) return std::nullopt;
   const double step = angularSearchStep(res_, points);
@@ -169,7 +179,8 @@ std::optional<ScanMatch2D> BranchAndBoundMatcher2D::match(
   // The best must reach min_score: start the bound just below it.
   Candidate best{0, 0, 0, static_cast<long>(std::ceil(min_score * 255.0 * n)) - 1};
   const long floor_score = best.score;
-  search(rotated, todo.data(), todo.size(), top, window, best);
+  const Leaves leaves{initial, step, m, exclude};
+  search(rotated, todo.data(), todo.size(), top, window, leaves, best);
   if (best.score <= floor_score) return std::nullopt;
   ScanMatch2D found;
   found.pose = {initial.x + best.dx * res_, initial.y + best.dy * res_,

@@ -18,6 +18,15 @@
 
 namespace metricmap {
 
+/// \brief Poses a search must not return: those within `distance` (m) of `centre` and within
+/// `angle` (rad) of its heading. The bounds stay exact (excluding poses only lowers maxima), so
+/// the search returns the best pose outside the region: the runner-up of a global search.
+struct SearchExclusion2D {
+  Pose2D centre;
+  double distance = 0.0;
+  double angle = 0.0;
+};
+
 /// \brief The precomputed levels of one submap, and the search over them.
 /// Probabilities are held as bytes (round(255 p)): scores are exact in those units.
 class BranchAndBoundMatcher2D {
@@ -30,10 +39,11 @@ class BranchAndBoundMatcher2D {
   /// \brief The best pose initial + (dx, dy, dθ), |dx|, |dy| <= linear_window (whole cells),
   /// |dθ| <= angular_window in steps of angularSearchStep, if its score (mean probability in
   /// byte units / 255) reaches min_score; the search prunes every branch whose bound is below the
-  /// best found so far.
+  /// best found so far. Poses in `exclude`, when given, are never returned.
   std::optional<ScanMatch2D> match(const std::vector<Eigen::Vector2f>& points,
                                    const Pose2D& initial, double linear_window,
-                                   double angular_window, double min_score) const;
+                                   double angular_window, double min_score,
+                                   const SearchExclusion2D* exclude = nullptr) const;
 
   /// \brief Candidates whose score was computed in the last match (for the report).
   std::size_t lastCandidates() const { return candidates_; }
@@ -62,9 +72,17 @@ class BranchAndBoundMatcher2D {
     std::int64_t i_lo = 0, i_hi = 0, j_lo = 0, j_hi = 0;
     std::vector<std::vector<std::int64_t>> offsets;  ///< [level][point]
   };
+  /// What a leaf's pose is, to test it against an exclusion.
+  struct Leaves {
+    Pose2D initial;
+    double step = 0.0;
+    int m = 0;
+    const SearchExclusion2D* exclude = nullptr;
+    bool excluded(const Candidate& c, double res) const;
+  };
   long score(std::size_t level, const Rotated& r, int dx, int dy) const;
   void search(const std::vector<Rotated>& rotated, Candidate* todo, std::size_t count, int depth,
-              int window, Candidate& best) const;
+              int window, const Leaves& leaves, Candidate& best) const;
 
   std::vector<Level> levels_;
   std::int64_t i0_ = 0, j0_ = 0;

@@ -24,6 +24,18 @@ MatchGrid::MatchGrid(const LogOddsGrid2D& grid, const ProbabilityTable& table)
       res_(grid.params().resolution),
       inv_res_(1.0 / grid.params().resolution) {}
 
+MatchGrid::MatchGrid(const float* log_odds, std::int64_t min_i, std::int64_t min_j,
+                     std::int64_t width, std::int64_t height, double resolution,
+                     const ProbabilityTable& table)
+    : data_(log_odds),
+      table_(&table),
+      i0_(min_i),
+      j0_(min_j),
+      w_(width),
+      h_(height),
+      res_(resolution),
+      inv_res_(1.0 / resolution) {}
+
 float MatchGrid::interpolate(double x, double y, double& gx, double& gy) const {
   const double u = x * inv_res_ - 0.5, v = y * inv_res_ - 0.5;
   const double fu = std::floor(u), fv = std::floor(v);

@@ -41,6 +41,10 @@ class ProbabilityTable {
 class MatchGrid {
  public:
   MatchGrid(const LogOddsGrid2D& grid, const ProbabilityTable& table);
+  /// \brief A view over log-odds cells (i, j) for i in [min_i, min_i + width), j in [min_j,
+  /// min_j + height), row by row, NaN where unknown (LogOddsGrid2D's layout): valid while they are.
+  MatchGrid(const float* log_odds, std::int64_t min_i, std::int64_t min_j, std::int64_t width,
+            std::int64_t height, double resolution, const ProbabilityTable& table);
 
   double resolution() const { return res_; }
   /// \brief Probability of cell (i, j); the table's minimum when unknown or outside.
