@@ -122,6 +122,7 @@ py::dict mapServerDict(const MapServerImage& image) {
   d["origin"] = py::make_tuple(image.origin_x, image.origin_y);
   d["mode"] = image.mode == MapServerMode::Scale     ? "scale"
               : image.mode == MapServerMode::Trinary ? "trinary"
+              : image.mode == MapServerMode::Raw     ? "raw"
                                                      : "unstated";
   return d;
 }

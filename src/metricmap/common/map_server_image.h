@@ -11,9 +11,10 @@ namespace metricmap {
 /// \brief map_server's trinary values: occupied (black), free (white), unknown.
 constexpr std::uint8_t kMapOccupied = 0, kMapFree = 254, kMapUnknown = 205;
 
-/// \brief The YAML's `mode`: not written (map_server's default, trinary), `trinary`, or
-/// `scale` (each pixel a probability: p = (255 - value) / 255).
-enum class MapServerMode { Unstated, Trinary, Scale };
+/// \brief The YAML's `mode`: not written (map_server's default, trinary), `trinary`,
+/// `scale` (each pixel a probability: p = (255 - value) / 255), or `raw` (each pixel the cell's
+/// value as is: costmaps, 255 unknown).
+enum class MapServerMode { Unstated, Trinary, Scale, Raw };
 
 /// \brief A grey image in map_server's convention: row 0 at the top; origin is the world
 /// (x, y) of the lower-left corner of the lower-left pixel.

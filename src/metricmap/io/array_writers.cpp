@@ -115,8 +115,11 @@ void writePgm(const std::string& path, int width, int height,
   writeImage<vtkPNMWriter>(path, width, height, 1, grey);
 }
 
-void writeNpyUint32(const std::string& path, const std::vector<std::size_t>& shape,
-                    const std::vector<std::uint32_t>& data) {
+namespace {
+
+/// One .npy (format 1.0) of a C-order little-endian array: `descr` its numpy type string.
+void writeNpy(const std::string& path, const std::vector<std::size_t>& shape, const char* descr,
+              const void* data, std::size_t count, std::size_t item_bytes) {
   std::string dims;
   std::size_t n = 1;
   for (std::size_t s : shape) {
@@ -124,8 +127,9 @@ void writeNpyUint32(const std::string& path, const std::vector<std::size_t>& sha
     n *= s;
   }
   if (shape.size() > 1) dims.erase(dims.size() - 2);  // (a, b, c) but (a,) for one axis
-  if (n != data.size()) throw std::invalid_argument(path + ": shape does not match the data");
-  std::string header = "{'descr': '<u4', 'fortran_order': False, 'shape': (" + dims + "), }";
+  if (n != count) throw std::invalid_argument(path + ": shape does not match the data");
+  std::string header =
+      std::string("{'descr': '") + descr + "', 'fortran_order': False, 'shape': (" + dims + "), }";
   // Magic (6) + version (2) + header length (2) + header, padded with spaces to 64 bytes, '\n'.
   const std::size_t total = 10 + header.size() + 1;
   header.append((64 - total % 64) % 64, ' ');
@@ -136,8 +140,20 @@ void writeNpyUint32(const std::string& path, const std::vector<std::size_t>& sha
   out += static_cast<char>(header.size() & 0xFF);
   out += static_cast<char>((header.size() >> 8) & 0xFF);
   out += header;
-  out.append(reinterpret_cast<const char*>(data.data()), data.size() * sizeof(std::uint32_t));
+  out.append(reinterpret_cast<const char*>(data), count * item_bytes);
   writeTextAtomic(path, out);
+}
+
+}  // namespace
+
+void writeNpyUint32(const std::string& path, const std::vector<std::size_t>& shape,
+                    const std::vector<std::uint32_t>& data) {
+  writeNpy(path, shape, "<u4", data.data(), data.size(), sizeof(std::uint32_t));
+}
+
+void writeNpyFloat32(const std::string& path, const std::vector<std::size_t>& shape,
+                     const std::vector<float>& data) {
+  writeNpy(path, shape, "<f4", data.data(), data.size(), sizeof(float));
 }
 
 }  // namespace metricmap

@@ -25,4 +25,9 @@ void writePgm(const std::string& path, int width, int height,
 void writeNpyUint32(const std::string& path, const std::vector<std::size_t>& shape,
                     const std::vector<std::uint32_t>& data);
 
+/// \brief Write a C-order little-endian float32 array as .npy (format 1.0).
+/// \throws std::runtime_error naming the file
+void writeNpyFloat32(const std::string& path, const std::vector<std::size_t>& shape,
+                     const std::vector<float>& data);
+
 }  // namespace metricmap

@@ -31,7 +31,9 @@ void writeMapServer(const MapServerImage& image, const MapServerFiles& files,
   yaml << YAML::BeginMap << YAML::Key << "image" << YAML::Value << files.image_name;
   if (image.mode != MapServerMode::Unstated)
     yaml << YAML::Key << "mode" << YAML::Value
-         << (image.mode == MapServerMode::Trinary ? "trinary" : "scale");
+         << (image.mode == MapServerMode::Trinary ? "trinary"
+             : image.mode == MapServerMode::Scale ? "scale"
+                                                  : "raw");
   yaml << YAML::Key << "resolution" << YAML::Value << image.resolution << YAML::Key << "origin"
        << YAML::Value << YAML::Flow << YAML::BeginSeq << image.origin_x << image.origin_y << 0.0
        << YAML::EndSeq << YAML::Key << "negate" << YAML::Value << 0 << YAML::Key
