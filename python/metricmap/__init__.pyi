@@ -304,8 +304,9 @@ class Slam2D:
     ) -> None: ...
     def add_scan(
         self,
-        ranges: npt.ArrayLike,
         angles: npt.ArrayLike,
+        ranges: npt.ArrayLike,
+        *,
         odometry: Optional[npt.ArrayLike] = None,
         stamp: Optional[float] = None,
     ) -> None: ...
@@ -359,8 +360,9 @@ def read_scan_log(
     path: _StrPath, preset: Optional[str] = None
 ) -> List[Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]]: ...
 def split_and_merge(
-    ranges: npt.ArrayLike,
     angles: npt.ArrayLike,
+    ranges: npt.ArrayLike,
+    *,
     distance_threshold: float = 0.05,
     angle_threshold: float = 0.08726646259971647,
     min_points: int = 5,

@@ -194,18 +194,17 @@ ValueError
 )doc")
       .def(
           "add_scan",
-          [](PySlam& p, ArrayLike ranges, ArrayLike angles, std::optional<ArrayLike> odometry,
+          [](PySlam& p, ArrayLike angles, ArrayLike ranges, std::optional<ArrayLike> odometry,
              std::optional<double> stamp) {
             if (p.finished) throw py::value_error("add_scan after finish()");
             LaserScan scan;
-            scan.ranges = vectorFrom(ranges, "ranges");
             scan.angles = vectorFrom(angles, "angles");
-            if (scan.ranges.size() != scan.angles.size())
-              throw py::value_error("ranges and angles must have the same length");
-            for (double a : scan.angles)
-              if (!std::isfinite(a)) throw py::value_error("angles must be finite");
+            scan.ranges = vectorFrom(ranges, "ranges");
             std::optional<Pose2D> odo;
             if (odometry) odo = boundedPose(*odometry, "odometry");
+            if (stamp && !std::isfinite(*stamp))
+              throw py::value_error("stamp must be finite (None: no stamp), got " +
+                                    py::repr(py::float_(*stamp)).cast<std::string>());
             const double t = stamp ? *stamp : std::numeric_limits<double>::quiet_NaN();
             {
               py::gil_scoped_release release;
@@ -213,27 +212,28 @@ ValueError
             }
             p.stamps.push_back(t);
           },
-          py::arg("ranges"), py::arg("angles"), py::arg("odometry") = py::none(),
+          py::arg("angles"), py::arg("ranges"), py::kw_only(), py::arg("odometry") = py::none(),
           py::arg("stamp") = py::none(), R"doc(
-Add the next scan.
+Add the next scan: ``add_scan(*scan.laser, odometry=scan.odometry, stamp=scan.stamp)``.
 
 Parameters
 ----------
+angles : array_like, shape (B,)
+    Radians, counter-clockwise, x forward, within [-2 pi, 2 pi]: the order ``Scan.laser`` and
+    :func:`read_scan_log` give, (angles, ranges).
 ranges : array_like, shape (B,)
     Metres; NaN: no return (the beam is skipped).
-angles : array_like, shape (B,)
-    Radians, counter-clockwise, x forward (e.g. from :func:`read_scan_log` or
-    ``Scan.laser``).
-odometry : array_like, optional
+odometry : array_like, optional, keyword-only
     The robot's raw odometry (base -> odometry world): (x, y, theta) or (4, 4); coordinates
     beyond 1e9 m are refused.
-stamp : float, optional
-    Seconds (the motion filter's time limit applies only with stamps).
+stamp : float, optional, keyword-only
+    Seconds, finite (the motion filter's time limit applies only with stamps).
 
 Raises
 ------
 ValueError
-    lengths differ, non-finite odometry or angles, or after finish().
+    no beams, lengths differ, an angle not finite or beyond 2 pi (ranges given first?),
+    non-finite odometry or stamp, or after finish().
 CapacityError
     the maps outgrow the memory budget.
 )doc")
