@@ -2,12 +2,13 @@
 # python/tests/test_stubs.py: every public name here exists there and vice versa, with the
 # same parameter names and order).
 import os
-from typing import Any, Dict, Iterable, List, Mapping, Optional, Tuple, Union
+from typing import Any, Callable, Dict, Iterable, List, Mapping, Optional, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
 
 _StrPath = Union[str, "os.PathLike[str]"]
+_Progress = Callable[[int, int], object]  # progress(done, total)
 
 __version__: str
 UNKNOWN: int
@@ -196,7 +197,11 @@ class SequenceMapper:
         occupancy_2d_max_range: Optional[float] = None,
     ) -> None: ...
     def build(
-        self, poses: npt.ArrayLike, frames: Optional[Iterable[int]] = None
+        self,
+        poses: npt.ArrayLike,
+        frames: Optional[Iterable[int]] = None,
+        *,
+        progress: Optional[_Progress] = None,
     ) -> SequenceMapper: ...
     def hit_map(self) -> Dict[str, Any]: ...
     def occupied_cells(self) -> int: ...
@@ -391,6 +396,8 @@ def run_odometry(
     voxel_size: Optional[float] = None,
     deskew: str = "auto",
     threads: int = 0,
+    *,
+    progress: Optional[_Progress] = None,
 ) -> Dict[str, Any]: ...
 def reference_sensor_poses(
     source: Union[ScanSource, _StrPath], frames: Optional[Iterable[int]] = None
@@ -400,6 +407,8 @@ def run_slam2d(
     frames: Optional[Iterable[int]] = None,
     config: Optional[Slam2DConfig] = None,
     loop_closure: bool = True,
+    *,
+    progress: Optional[_Progress] = None,
 ) -> Slam2D: ...
 def read_g2o(path: _StrPath) -> PoseGraph: ...
 def read_trajectory(

@@ -99,9 +99,18 @@ Eigen::Isometry3d spatial(const Pose2D& p) {
 std::vector<std::size_t> framesFrom(const py::object& obj, const char* name) {
   std::vector<std::size_t> out;
   if (obj.is_none()) return out;
-  py::array a = py::array::ensure(obj);
+  py::object seq = obj;
+  // An iterator or generator is read once into a list; numpy would see one object.
+  if (!py::isinstance<py::array>(obj) && !py::hasattr(obj, "__len__") &&
+      py::hasattr(obj, "__iter__"))
+    seq = py::list(obj);
+  if (py::isinstance<py::str>(seq) || py::isinstance<py::bytes>(seq))
+    throw py::type_error(std::string(name) + " must be a sequence of integers, got a string");
+  py::array a = py::array::ensure(seq);
   if (!a) throw py::type_error(std::string(name) + " must be a sequence of integers");
-  if (a.size() == 0) return out;
+  if (a.size() == 0)
+    throw py::value_error(std::string(name) +
+                          " is empty: nothing to process (None selects every scan)");
   if (a.dtype().kind() != 'i' && a.dtype().kind() != 'u')
     throw py::type_error(std::string(name) + " must hold integers");
   if (a.ndim() != 1) throw py::value_error(std::string(name) + " must be 1-D");

@@ -18,6 +18,7 @@
 #include "metricmap/sequence/odometry_run.h"
 #include "metricmap/sequence/sequence_mapper.h"
 #include "poses.h"
+#include "progress.h"
 #include "sequence.h"
 
 namespace metricmap::python {
@@ -271,7 +272,9 @@ ValueError
       "run_odometry",
       [](py::object source, py::object frames, std::optional<std::string> profile,
          std::optional<double> max_range, std::optional<double> min_range,
-         std::optional<double> voxel_size, const std::string& deskew, unsigned threads) {
+         std::optional<double> voxel_size, const std::string& deskew, unsigned threads,
+         py::object progress) {
+        ProgressWatch watch(progress);
         py::object holder;
         PySource& s = sourceFrom(source, holder);
         OdometryRunOptions o;
@@ -304,14 +307,17 @@ ValueError
         {
           py::gil_scoped_release release;
           std::lock_guard<std::mutex> lock(s.mutex);
-          run = runOdometry(*s.source, o);
+          run = runOdometry(*s.source, o,
+                            [&watch](const OdometryFrame&, std::size_t done, std::size_t total) {
+                              watch(done, total);
+                            });
         }
         return odometryRunDict(run, info);
       },
       py::arg("source"), py::arg("frames") = py::none(), py::arg("profile") = py::none(),
       py::arg("max_range") = py::none(), py::arg("min_range") = py::none(),
       py::arg("voxel_size") = py::none(), py::arg("deskew") = "auto", py::arg("threads") = 0u,
-      R"doc(
+      py::kw_only(), py::arg("progress") = py::none(), R"doc(
 LiDAR odometry over a scan source: what `metricmap odometry` computes (sequence/odometry_run).
 
 Parameters
@@ -330,6 +336,8 @@ deskew : {'auto', 'off', 'azimuth'}
     azimuth of a spinning sensor.
 threads : int
     Threads for the scan-to-map pairing (0: all); the poses do not depend on it.
+progress : callable(done, total), optional, keyword-only
+    Called with the frames done and selected, at most every 20 ms and after the last.
 
 Returns
 -------
@@ -347,7 +355,10 @@ Raises
 InputError
     a scan that cannot be read or registered.
 ValueError
-    frames not strictly increasing or out of range, a bad option.
+    frames empty, not strictly increasing or out of range, a bad option.
+KeyboardInterrupt
+    Ctrl-C (checked between frames); nothing is returned. Any exception `progress` raises
+    likewise stops the run and reaches the caller.
 )doc");
 
   py::class_<PyMapper>(m, "SequenceMapper", R"doc(
@@ -425,21 +436,27 @@ ValueError
 )doc")
       .def(
           "build",
-          [](py::object self, ArrayLike poses, py::object frames) {
+          [](py::object self, ArrayLike poses, py::object frames, py::object progress) {
             PyMapper& p = self.cast<PyMapper&>();
+            ProgressWatch watch(progress);
             const std::vector<Eigen::Isometry3d> t = posesFrom(poses, "poses");
             const std::vector<std::size_t> f = framesFrom(frames, "frames");
             {
               py::gil_scoped_release release;
               std::lock_guard<std::mutex> lock(p.source->mutex);
               p.built = false;
-              p.mapper->build(t, f);
+              p.mapper->build(t, f,
+                              [&watch](const FrameReport&, std::size_t done, std::size_t total) {
+                                watch(done, total);
+                              });
               p.built = true;
             }
             return self;
           },
-          py::arg("poses"), py::arg("frames") = py::none(), R"doc(
-Forget the maps and fuse the scans `frames` (default: every scan) at `poses`.
+          py::arg("poses"), py::arg("frames") = py::none(), py::kw_only(),
+          py::arg("progress") = py::none(), R"doc(
+Forget the maps and fuse the scans `frames` (default: every scan) at `poses`. While it runs and
+after it is stopped (Ctrl-C, an error) the mapper has no maps: build again.
 
 Parameters
 ----------
@@ -447,7 +464,9 @@ poses : array_like, shape (N, 4, 4)
     Sensor -> map world, one per frame (e.g. ``run_odometry(...)['sensor_poses']`` or
     :func:`reference_sensor_poses`).
 frames : sequence of int, optional
-    Increasing scan indices, as many as poses.
+    Increasing scan indices, as many as poses (not empty).
+progress : callable(done, total), optional, keyword-only
+    Called with the scans fused and selected, at most every 20 ms and after the last.
 
 Returns
 -------

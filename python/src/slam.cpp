@@ -18,6 +18,7 @@
 #include "metricmap/slam/slam_2d_run.h"
 #include "posegraph.h"
 #include "poses.h"
+#include "progress.h"
 #include "sequence.h"
 
 namespace metricmap::python {
@@ -351,7 +352,8 @@ lower-left corner, m), mode.
   m.def(
       "run_slam2d",
       [](py::object source, py::object frames, std::optional<Slam2DConfig> config,
-         bool loop_closure) {
+         bool loop_closure, py::object progress) {
+        ProgressWatch watch(progress);
         py::object holder;
         PySource& s = sourceFrom(source, holder);
         const SourceInfo& info = s.source->info();
@@ -359,6 +361,7 @@ lower-left corner, m), mode.
           throw InputError(info.path + ": slam2d needs 2D laser scans (a CARMEN log); this is a " +
                            info.kind + " source of 3D scans");
         std::vector<std::size_t> f = framesFrom(frames, "frames");
+        // None selects every scan (framesFrom refuses an empty selection).
         if (f.empty())
           for (std::size_t k = 0; k < s.source->size(); ++k) f.push_back(k);
         for (std::size_t k = 0; k < f.size(); ++k) {
@@ -375,7 +378,9 @@ lower-left corner, m), mode.
         {
           py::gil_scoped_release release;
           std::lock_guard<std::mutex> lock(s.mutex);
-          Slam2DRun run = runSlam2D(*s.source, f, c, info.path);
+          Slam2DRun run = runSlam2D(
+              *s.source, f, c, info.path,
+              [&watch](std::size_t done, std::size_t total, const Slam2D&) { watch(done, total); });
           p->slam = std::move(run.slam);
           p->stamps = std::move(run.scan_stamps);
         }
@@ -383,7 +388,7 @@ lower-left corner, m), mode.
         return p;
       },
       py::arg("source"), py::arg("frames") = py::none(), py::arg("config") = py::none(),
-      py::arg("loop_closure") = true, R"doc(
+      py::arg("loop_closure") = true, py::kw_only(), py::arg("progress") = py::none(), R"doc(
 Run :class:`Slam2D` over a planar source (a CARMEN log), as `metricmap slam2d` does: the
 source's laser offset as sensor_to_base, each scan's beams, raw odometry and stamp.
 
@@ -395,6 +400,9 @@ frames : sequence of int, optional
 config : Slam2DConfig, optional
 loop_closure : bool
     False: local SLAM only (`--no-loop-closure`).
+progress : callable(done, total), optional, keyword-only
+    Called with the scans done and the scans selected, at most every 20 ms and after the last
+    scan (before the final optimisation).
 
 Returns
 -------
@@ -409,7 +417,10 @@ InputError
 CapacityError
     the maps outgrow the memory budget.
 ValueError
-    a frame out of range, or frames not strictly increasing.
+    a frame out of range, frames empty or not strictly increasing.
+KeyboardInterrupt
+    Ctrl-C (checked between scans); nothing is returned. Any exception `progress` raises
+    likewise stops the run and reaches the caller.
 )doc");
 }
 
