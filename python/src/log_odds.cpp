@@ -55,6 +55,57 @@ py::array_t<double> centres(const LogOddsMap& map, bool occupied) {
   return a;
 }
 
+/// The map's state for pickle: (resolution, prob_hit, prob_miss, clamp_min, clamp_max,
+/// occupancy_threshold, max_range), keys (K, 3) int64, log-odds (K,) float32.
+py::tuple mapState(const PyLogOddsMap& self) {
+  const LogOddsParams& p = self.map->params();
+  std::vector<std::int64_t> keys;
+  std::vector<float> values;
+  keys.reserve(3 * self.map->knownVoxels());
+  values.reserve(self.map->knownVoxels());
+  self.map->forEachKnown([&](const VoxelKey& k, float l) {
+    keys.insert(keys.end(), {k.x, k.y, k.z});
+    values.push_back(l);
+  });
+  const py::ssize_t n = static_cast<py::ssize_t>(values.size());
+  return py::make_tuple(py::make_tuple(p.resolution, p.prob_hit, p.prob_miss, p.clamp_min,
+                                       p.clamp_max, p.occupancy_threshold, p.max_range),
+                        arrayFrom(keys, {n, 3}), arrayFrom(values, {n}));
+}
+
+std::unique_ptr<PyLogOddsMap> mapFromState(const py::tuple& t) {
+  if (t.size() != 3) throw py::value_error("LogOddsMap: not a pickled map");
+  const auto q = t[0].cast<std::vector<double>>();
+  if (q.size() != 7) throw py::value_error("LogOddsMap: not a pickled map");
+  const LogOddsParams p{q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
+  auto keys = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>(t[1]);
+  auto values = py::array_t<float, py::array::c_style | py::array::forcecast>(t[2]);
+  if (keys.ndim() != 2 || keys.shape(1) != 3 || values.ndim() != 1 ||
+      values.shape(0) != keys.shape(0))
+    throw py::value_error("LogOddsMap: not a pickled map");
+  auto out = std::make_unique<PyLogOddsMap>();
+  out->map = std::make_unique<LogOddsMap>(p);
+  for (py::ssize_t k = 0; k < values.shape(0); ++k)
+    out->map->setLogOdds(VoxelKey{keys.at(k, 0), keys.at(k, 1), keys.at(k, 2)}, values.at(k));
+  return out;
+}
+
+/// Same parameters and the same log-odds in the same voxels.
+bool sameMap(const LogOddsMap& a, const LogOddsMap& b) {
+  const LogOddsParams &p = a.params(), &q = b.params();
+  if (p.resolution != q.resolution || p.prob_hit != q.prob_hit || p.prob_miss != q.prob_miss ||
+      p.clamp_min != q.clamp_min || p.clamp_max != q.clamp_max ||
+      p.occupancy_threshold != q.occupancy_threshold || p.max_range != q.max_range ||
+      a.knownVoxels() != b.knownVoxels())
+    return false;
+  bool same = true;
+  a.forEachKnown([&](const VoxelKey& k, float l) {
+    const std::optional<float> m = b.logOdds(k);
+    same = same && m && *m == l;
+  });
+  return same;
+}
+
 }  // namespace
 
 void initLogOdds(py::module_& m) {
@@ -292,6 +343,14 @@ ValueError
                              [](const PyLogOddsMap& self) { return self.map->occupiedVoxels(); })
       .def_property_readonly("free_voxels",
                              [](const PyLogOddsMap& self) { return self.map->freeVoxels(); })
+      .def(py::pickle(&mapState, &mapFromState))
+      .def(
+          "__eq__",
+          [](const PyLogOddsMap& self, const py::object& other) {
+            return py::isinstance<PyLogOddsMap>(other) &&
+                   sameMap(*self.map, *other.cast<const PyLogOddsMap&>().map);
+          },
+          py::is_operator())
       .def("__repr__", [](const PyLogOddsMap& self) {
         return "<metricmap.LogOddsMap resolution " + std::to_string(self.map->resolution()) + ", " +
                std::to_string(self.map->knownVoxels()) + " known voxels>";

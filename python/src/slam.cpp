@@ -20,20 +20,11 @@
 #include "poses.h"
 #include "progress.h"
 #include "sequence.h"
+#include "slam_state.h"
 
 namespace metricmap::python {
 
 namespace {
-
-struct PySlam {
-  std::unique_ptr<Slam2D> slam;
-  std::vector<double> stamps;
-  bool finished = false;
-  const Slam2D& finishedSlam() const {
-    if (!finished) throw py::value_error("the map is built by finish(): call it first");
-    return *slam;
-  }
-};
 
 std::vector<double> vectorFrom(const py::handle& obj, const char* name) {
   auto a = doublesFromArray(obj, name);
@@ -74,15 +65,23 @@ std::unique_ptr<PySlam> makeSlam(const std::optional<Slam2DConfig>& config,
   return p;
 }
 
+/// The attribute names of Slam2DConfig, in declaration order (pickle, ==, repr).
+std::vector<std::string>& configFields() {
+  static std::vector<std::string> names;
+  return names;
+}
+
 template <typename T>
 void field(py::class_<Slam2DConfig>& c, const char* name, T Slam2DConfig::*member,
            const char* doc) {
+  configFields().push_back(name);
   c.def_readwrite(name, member, doc);
 }
 
 template <typename T>
 void mapField(py::class_<Slam2DConfig>& c, const char* name, T LogOddsParams::*member,
               const char* doc) {
+  configFields().push_back(name);
   c.def_property(
       name, [member](const Slam2DConfig& s) { return s.map.*member; },
       [member](Slam2DConfig& s, T v) { s.map.*member = v; }, doc);
@@ -169,6 +168,40 @@ parameters are the ``map_*`` attributes.
   c.def(
       "validate", [](const Slam2DConfig& s) { validateSlam2DConfig(s); },
       "Raise ValueError naming the first value out of its range.");
+  c.def(py::pickle(
+      [](const py::object& self) {
+        py::dict d;
+        for (const std::string& name : configFields()) d[name.c_str()] = self.attr(name.c_str());
+        return d;
+      },
+      [](const py::dict& d) {
+        Slam2DConfig config;
+        py::object view = py::cast(&config, py::return_value_policy::reference);
+        for (auto item : d) view.attr(item.first) = item.second;
+        return config;
+      }));
+  c.def(
+      "__eq__",
+      [](const py::object& self, const py::object& other) {
+        if (!py::isinstance<Slam2DConfig>(other)) return false;
+        for (const std::string& name : configFields())
+          if (!self.attr(name.c_str()).equal(other.attr(name.c_str()))) return false;
+        return true;
+      },
+      py::is_operator());
+  c.def("__repr__", [](const py::object& self) {
+    // The attributes that differ from the defaults, as a call that makes this configuration.
+    py::object defaults = py::cast(Slam2DConfig{});
+    std::string out = "Slam2DConfig(";
+    bool first = true;
+    for (const std::string& name : configFields()) {
+      py::object v = self.attr(name.c_str());
+      if (v.equal(defaults.attr(name.c_str()))) continue;
+      out += (first ? "" : ", ") + name + "=" + py::repr(v).cast<std::string>();
+      first = false;
+    }
+    return out + ")";
+  });
 
   py::class_<PySlam>(m, "Slam2D", R"doc(
 2D laser SLAM with submaps and loop closure (Hess et al. 2016, Cartographer's method):
@@ -197,7 +230,7 @@ ValueError
           "add_scan",
           [](PySlam& p, ArrayLike angles, ArrayLike ranges, std::optional<ArrayLike> odometry,
              std::optional<double> stamp) {
-            if (p.finished) throw py::value_error("add_scan after finish()");
+            if (p.finished()) throw py::value_error("add_scan after finish()");
             LaserScan scan;
             scan.angles = vectorFrom(angles, "angles");
             scan.ranges = vectorFrom(ranges, "ranges");
@@ -241,16 +274,19 @@ CapacityError
       .def(
           "finish",
           [](PySlam& p) {
-            if (p.finished) return;
+            if (p.finished()) return;
             {
               py::gil_scoped_release release;
               p.slam->finish();
+              p.keepResult();
             }
-            p.finished = true;
           },
           "Optimise the graph once more and build the map; further add_scan calls are refused.")
       .def_property_readonly(
-          "trajectory", [](const PySlam& p) { return poses2dArray(p.slam->trajectory()); },
+          "trajectory",
+          [](const PySlam& p) {
+            return poses2dArray(p.result ? p.result->trajectory : p.slam->trajectory());
+          },
           "(N, 3) float64: x (m), y (m), theta (rad) of the robot at every scan added "
           "(after finish: optimised).")
       .def_property_readonly(
@@ -259,7 +295,8 @@ CapacityError
       .def_property_readonly(
           "node_scans",
           [](const PySlam& p) {
-            std::vector<long long> v(p.slam->nodeScans().begin(), p.slam->nodeScans().end());
+            const auto& n = p.result ? p.result->node_scans : p.slam->nodeScans();
+            std::vector<long long> v(n.begin(), n.end());
             return arrayFrom(v, {py::ssize_t(v.size())});
           },
           "(K,) int64: the scan index of every node (graph vertex).")
@@ -267,7 +304,7 @@ CapacityError
           "loops",
           [](const PySlam& p) {
             py::list out;
-            for (const LoopClosure2D& l : p.slam->loops()) {
+            for (const LoopClosure2D& l : p.result ? p.result->loops : p.slam->loops()) {
               py::dict d;
               d["node"] = l.node;
               d["submap"] = l.submap;
@@ -284,14 +321,14 @@ CapacityError
           [](const PySlam& p) {
             PyPoseGraph g;
             g.dimension = 2;
-            g.graph2d = p.slam->graph();
+            g.graph2d = p.result ? p.result->graph : p.slam->graph();
             return g;
           },
           "PoseGraph: a copy of the pose graph (one vertex per node).")
       .def_property_readonly(
           "stats",
           [](const PySlam& p) {
-            const Slam2DStats& s = p.slam->stats();
+            const Slam2DStats& s = p.result ? p.result->stats : p.slam->stats();
             py::dict d;
             d["scans"] = s.scans;
             d["nodes"] = s.nodes;
@@ -314,10 +351,10 @@ CapacityError
           },
           "dict: counts and seconds per phase (Slam2DStats).")
       .def_property_readonly(
-          "config", [](const PySlam& p) { return p.slam->config(); },
+          "config", [](const PySlam& p) { return p.result ? p.result->config : p.slam->config(); },
           "Slam2DConfig: a copy of the configuration in use.")
       .def(
-          "map", [](const PySlam& p) { return mapDict(p.finishedSlam().map()); },
+          "map", [](const PySlam& p) { return mapDict(*p.finishedResult().map); },
           R"doc(
 The final map (after finish): dict with log_odds (H, W) float32 (row r, column c is the cell
 (min_i + c, min_j + r) of `resolution` m, spanning [i r, (i+1) r) x [j r, (j+1) r); NaN
@@ -326,7 +363,7 @@ unknown), min_i, min_j, resolution, occupied_cells, known_cells.
       .def(
           "map_image",
           [](const PySlam& p, const std::string& kind) {
-            const LogOddsGrid2D& g = p.finishedSlam().map();
+            const LogOddsGrid2D& g = *p.finishedResult().map;
             if (kind == "trinary") return mapServerDict(g.trinaryImage());
             if (kind == "probability") return mapServerDict(g.probabilityImage());
             throw py::value_error("kind must be 'trinary' or 'probability', got '" + kind + "'");
@@ -339,7 +376,7 @@ lower-left corner, m), mode.
       .def(
           "write_map",
           [](const PySlam& p, const std::filesystem::path& path, const std::string& kind) {
-            const LogOddsGrid2D& g = p.finishedSlam().map();
+            const LogOddsGrid2D& g = *p.finishedResult().map;
             if (kind != "trinary" && kind != "probability")
               throw py::value_error("kind must be 'trinary' or 'probability', got '" + kind + "'");
             writeMapImage(path.string(),
@@ -347,7 +384,15 @@ lower-left corner, m), mode.
           },
           py::arg("path"), py::arg("kind") = "trinary",
           "Write the map as map_server files: `path` (.pgm) and the .yaml beside it (what "
-          "`metricmap slam2d --out-map` writes for 'trinary').");
+          "`metricmap slam2d --out-map` writes for 'trinary').")
+      .def(py::pickle(&slamState, &slamFromState))
+      .def("__repr__", [](const PySlam& p) {
+        const std::size_t scans = p.stamps.size();
+        return "<metricmap.Slam2D " + std::to_string(scans) + " scans, " +
+               (p.result ? std::to_string(p.result->node_scans.size()) + " nodes, " +
+                               std::to_string(p.result->loops.size()) + " loops, finished>"
+                         : std::string("running>"));
+      });
 
   m.def(
       "run_slam2d",
@@ -383,8 +428,8 @@ lower-left corner, m), mode.
               [&watch](std::size_t done, std::size_t total, const Slam2D&) { watch(done, total); });
           p->slam = std::move(run.slam);
           p->stamps = std::move(run.scan_stamps);
+          p->keepResult();
         }
-        p->finished = true;
         return p;
       },
       py::arg("source"), py::arg("frames") = py::none(), py::arg("config") = py::none(),
