@@ -382,7 +382,7 @@ def sensor_profile(points: npt.ArrayLike) -> Dict[str, float]: ...
 def open_scan_source(
     path: _StrPath,
     format: str = "auto",
-    sequence: str = "00",
+    sequence: Optional[str] = None,
     reference_poses: Optional[_StrPath] = None,
     times: Optional[_StrPath] = None,
     topic: Optional[str] = None,
@@ -426,7 +426,7 @@ def evaluate_trajectory(
     estimate_stamps: Optional[npt.ArrayLike] = None,
     reference_stamps: Optional[npt.ArrayLike] = None,
     align: str = "rigid",
-    max_time_diff: float = 0.01,
+    max_time_diff: Optional[float] = None,
 ) -> Dict[str, Any]: ...
 def read_relations(
     path: _StrPath,

@@ -43,6 +43,9 @@ void initLines(py::module_& m) {
           py::gil_scoped_release release;
           log = readScanLog(path.string(), format ? &*format : nullptr);
         }
+        // What the command prints about skipped lines, as Python warnings.
+        for (const std::string& w : log.warnings)
+          if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
         py::list scans;
         for (const LaserScan& s : log.scans) {
           const py::ssize_t n = static_cast<py::ssize_t>(s.ranges.size());
@@ -56,6 +59,9 @@ void initLines(py::module_& m) {
       py::arg("path"), py::arg("preset") = py::none(), R"doc(
 Read the scans of a 2D laser log: CSV "angle,range", CARMEN (FLASER / ROBOTLASER1; plain,
 .gz, .bz2), or one scan per line with `preset='urg04lx-mines'` (BreezySLAM's exp*.dat).
+
+Lines that cannot be a scan are skipped with a UserWarning each (what `metricmap lines`
+prints).
 
 Returns
 -------

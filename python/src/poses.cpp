@@ -1,5 +1,7 @@
 #include "poses.h"
 
+#include "metricmap/common/rigid_transform.h"
+
 #include <cmath>
 #include <string>
 
@@ -30,14 +32,7 @@ std::vector<Eigen::Isometry3d> posesFrom(const py::handle& obj, const char* name
     Eigen::Matrix4d m;
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) m(i, j) = d[16 * k + 4 * i + j];
-    const std::string which = std::string(name) + "[" + std::to_string(k) + "]";
-    if (!m.allFinite()) throw py::value_error(which + " is not finite");
-    const Eigen::Matrix3d r = m.topLeftCorner<3, 3>();
-    const double orth = (r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
-    if (orth > 1e-3 || std::abs(r.determinant() - 1.0) > 1e-3)
-      throw py::value_error(which + " is not a rigid transform (rotation not orthonormal)");
-    if ((m.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() > 1e-6)
-      throw py::value_error(which + ": the last row must be 0 0 0 1");
+    checkRigidTransform(m, std::string(name) + "[" + std::to_string(k) + "]");
     out[k].matrix() = m;
   }
   return out;
@@ -73,6 +68,7 @@ Pose2D pose2dFrom(const py::handle& obj, const char* name) {
   auto a = doublesFromArray(obj, name);
   if (a.ndim() == 2 && a.shape(0) == 4 && a.shape(1) == 4) {
     const Eigen::Matrix4d m = matrix4From(obj, name);
+    checkRigidTransform(m, name);  // a reflection or a shear has no planar pose
     Eigen::Isometry3d t;
     t.matrix() = m;
     return planar(t);

@@ -16,6 +16,7 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/slam/slam_2d.h"
 #include "metricmap/slam/slam_2d_run.h"
+#include "object_lock.h"
 #include "posegraph.h"
 #include "poses.h"
 #include "progress.h"
@@ -230,6 +231,7 @@ ValueError
           "add_scan",
           [](PySlam& p, ArrayLike angles, ArrayLike ranges, std::optional<ArrayLike> odometry,
              std::optional<double> stamp) {
+            ObjectGuard guard(p.mutex, "Slam2D");
             if (p.finished()) throw py::value_error("add_scan after finish()");
             LaserScan scan;
             scan.angles = vectorFrom(angles, "angles");
@@ -274,6 +276,7 @@ CapacityError
       .def(
           "finish",
           [](PySlam& p) {
+            ObjectGuard guard(p.mutex, "Slam2D");
             if (p.finished()) return;
             {
               py::gil_scoped_release release;
@@ -285,16 +288,22 @@ CapacityError
       .def_property_readonly(
           "trajectory",
           [](const PySlam& p) {
+            ObjectGuard guard(p.mutex, "Slam2D");
             return poses2dArray(p.result ? p.result->trajectory : p.slam->trajectory());
           },
           "(N, 3) float64: x (m), y (m), theta (rad) of the robot at every scan added "
           "(after finish: optimised).")
       .def_property_readonly(
-          "stamps", [](const PySlam& p) { return doublesArray(p.stamps); },
+          "stamps",
+          [](const PySlam& p) {
+            ObjectGuard guard(p.mutex, "Slam2D");
+            return doublesArray(p.stamps);
+          },
           "(N,) float64: the stamps given to add_scan (NaN where none), in the order added.")
       .def_property_readonly(
           "node_scans",
           [](const PySlam& p) {
+            ObjectGuard guard(p.mutex, "Slam2D");
             const auto& n = p.result ? p.result->node_scans : p.slam->nodeScans();
             std::vector<long long> v(n.begin(), n.end());
             return arrayFrom(v, {py::ssize_t(v.size())});
@@ -303,6 +312,7 @@ CapacityError
       .def_property_readonly(
           "loops",
           [](const PySlam& p) {
+            ObjectGuard guard(p.mutex, "Slam2D");
             py::list out;
             for (const LoopClosure2D& l : p.result ? p.result->loops : p.slam->loops()) {
               py::dict d;
@@ -319,6 +329,7 @@ CapacityError
       .def_property_readonly(
           "graph",
           [](const PySlam& p) {
+            ObjectGuard guard(p.mutex, "Slam2D");
             PyPoseGraph g;
             g.dimension = 2;
             g.graph2d = p.result ? p.result->graph : p.slam->graph();
@@ -328,6 +339,7 @@ CapacityError
       .def_property_readonly(
           "stats",
           [](const PySlam& p) {
+            ObjectGuard guard(p.mutex, "Slam2D");
             const Slam2DStats& s = p.result ? p.result->stats : p.slam->stats();
             py::dict d;
             d["scans"] = s.scans;
@@ -351,10 +363,18 @@ CapacityError
           },
           "dict: counts and seconds per phase (Slam2DStats).")
       .def_property_readonly(
-          "config", [](const PySlam& p) { return p.result ? p.result->config : p.slam->config(); },
+          "config",
+          [](const PySlam& p) {
+            ObjectGuard guard(p.mutex, "Slam2D");
+            return p.result ? p.result->config : p.slam->config();
+          },
           "Slam2DConfig: a copy of the configuration in use.")
       .def(
-          "map", [](const PySlam& p) { return mapDict(*p.finishedResult().map); },
+          "map",
+          [](const PySlam& p) {
+            ObjectGuard guard(p.mutex, "Slam2D");
+            return mapDict(*p.finishedResult().map);
+          },
           R"doc(
 The final map (after finish): dict with log_odds (H, W) float32 (row r, column c is the cell
 (min_i + c, min_j + r) of `resolution` m, spanning [i r, (i+1) r) x [j r, (j+1) r); NaN
@@ -363,6 +383,7 @@ unknown), min_i, min_j, resolution, occupied_cells, known_cells.
       .def(
           "map_image",
           [](const PySlam& p, const std::string& kind) {
+            ObjectGuard guard(p.mutex, "Slam2D");
             const LogOddsGrid2D& g = *p.finishedResult().map;
             if (kind == "trinary") return mapServerDict(g.trinaryImage());
             if (kind == "probability") return mapServerDict(g.probabilityImage());
@@ -376,6 +397,7 @@ lower-left corner, m), mode.
       .def(
           "write_map",
           [](const PySlam& p, const std::filesystem::path& path, const std::string& kind) {
+            ObjectGuard guard(p.mutex, "Slam2D");
             const LogOddsGrid2D& g = *p.finishedResult().map;
             if (kind != "trinary" && kind != "probability")
               throw py::value_error("kind must be 'trinary' or 'probability', got '" + kind + "'");
@@ -387,6 +409,7 @@ lower-left corner, m), mode.
           "`metricmap slam2d --out-map` writes for 'trinary').")
       .def(py::pickle(&slamState, &slamFromState))
       .def("__repr__", [](const PySlam& p) {
+        ObjectGuard guard(p.mutex, "Slam2D");
         const std::size_t scans = p.stamps.size();
         return "<metricmap.Slam2D " + std::to_string(scans) + " scans, " +
                (p.result ? std::to_string(p.result->node_scans.size()) + " nodes, " +

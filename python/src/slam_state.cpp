@@ -142,6 +142,7 @@ const Slam2DResult& PySlam::finishedResult() const {
 }
 
 py::tuple slamState(const PySlam& p) {
+  ObjectGuard guard(p.mutex, "Slam2D");
   if (!p.result)
     throw py::type_error(
         "a Slam2D pickles once finished (its working state is not saved): "

@@ -9,6 +9,7 @@
 #include "arrays.h"
 #include "metricmap/mapping/log_odds_grid_2d.h"
 #include "metricmap/slam/slam_2d.h"
+#include "object_lock.h"
 
 namespace metricmap::python {
 
@@ -28,6 +29,7 @@ struct PySlam {
   std::unique_ptr<Slam2D> slam;          ///< until finished
   std::unique_ptr<Slam2DResult> result;  ///< once finished
   std::vector<double> stamps;            ///< as given to add_scan (NaN: none)
+  mutable ObjectMutex mutex;             ///< serialises the object's calls
   bool finished() const { return result != nullptr; }
   /// \brief Keep the results of the finished `slam` and free it.
   void keepResult();

@@ -102,6 +102,12 @@ struct ScanSourceOptions {
 /// path (missing, or none of these). Reads nothing but the file system's entries.
 std::string scanSourceKind(const std::string& path, const std::string& format);
 
+/// \brief Why a source of `kind` (scanSourceKind) would ignore the option `option` ("sequence",
+/// "times", "reference_poses" or "topic") if it were given, or "" when the option applies (or
+/// the kind is unknown: the source itself refuses the path then). Callers refuse a given option
+/// the source would ignore, with this reason.
+std::string ignoredSourceOption(const std::string& kind, const std::string& option);
+
 /// \brief Open the source at `path`: a KITTI odometry root (has sequences/), a folder of scans
 /// (.pcd .ply .bin .npy, one format), a list file (.txt of scan paths) or a CARMEN log
 /// (.clf/.log, optionally .gz/.bz2) or a ROS bag (.db3, .mcap, a rosbag2 folder with

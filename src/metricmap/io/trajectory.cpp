@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -160,13 +161,25 @@ std::string formatTumTrajectory(const Trajectory& trajectory) {
                                 " poses");
   }
   std::string text;
+  double written_before = 0.0;
   for (std::size_t i = 0; i < trajectory.size(); ++i) {
     const Eigen::Isometry3d& pose = trajectory.poses[i];
+    const double stamp = trajectory.hasStamps() ? trajectory.stamps[i] : static_cast<double>(i);
+    // What readTrajectoryFile reads back must increase strictly: the stamps as written (9
+    // decimals), so two stamps closer than 1 ns are refused too.
+    char field[400];
+    std::snprintf(field, sizeof field, "%.9f", stamp);
+    const double written = std::strtod(field, nullptr);
+    if (!std::isfinite(stamp) || (i > 0 && !(written > written_before)))
+      throw std::invalid_argument("TUM trajectory: stamp " + formatNumber(stamp) + " (pose " +
+                                  std::to_string(i) +
+                                  ") is not finite or not after the one before as written (" +
+                                  field + "); stamps must increase strictly");
+    written_before = written;
     Eigen::Quaterniond q(pose.linear());
     q.normalize();
     if (q.w() < 0.0) q.coeffs() = -q.coeffs();
     const Eigen::Vector3d t = pose.translation();
-    const double stamp = trajectory.hasStamps() ? trajectory.stamps[i] : static_cast<double>(i);
     // %.9f of a stamp up to 1.8e308 takes 320 characters: the buffer holds every finite value.
     char line[512];
     std::snprintf(line, sizeof line, "%.9f %.9e %.9e %.9e %.9e %.9e %.9e %.9e\n", stamp, t.x(),

@@ -49,7 +49,8 @@ std::string formatKittiTrajectory(const Trajectory& trajectory);
 /// \brief The trajectory in TUM form, "stamp tx ty tz qx qy qz qw" per line (stamp `%.9f`,
 /// the rest `%.9e`, quaternion normalised with qw >= 0). A trajectory without stamps is written
 /// with its pose index (0, 1, 2, ...) as the stamp.
-/// \throws std::invalid_argument when the trajectory has stamps but not one per pose
+/// \throws std::invalid_argument when the trajectory has stamps but not one per pose, or stamps
+/// that are not finite or (as written) not strictly increasing: what the reader would refuse
 std::string formatTumTrajectory(const Trajectory& trajectory);
 
 /// \brief A time-stamp file: one finite number per line (seconds), blank lines and '#'
