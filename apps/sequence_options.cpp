@@ -44,9 +44,11 @@ void addSourceOptions(CLI::App& app, SourceOptions& o) {
 void checkSourceOptions(const CLI::App& app, const SourceOptions& o) {
   // Options the source would ignore: refused, never dropped silently.
   const std::string kind = scanSourceKind(o.path, o.format);
-  for (const char* option : {"sequence", "times", "reference", "topic"}) {
-    const std::string why = optionUnusedBySource(kind, option);
-    refuseIgnored(app, std::string("--") + option, why.empty(), why);
+  for (const auto& [field, option] :
+       {std::pair{"sequence", "--sequence"}, std::pair{"times", "--times"},
+        std::pair{"reference_poses", "--reference"}, std::pair{"topic", "--topic"}}) {
+    const std::string why = ignoredSourceOption(kind, field);
+    refuseIgnored(app, option, why.empty(), why);
   }
   if (o.frames.empty()) {
     if (app.count("--frames") > 0)

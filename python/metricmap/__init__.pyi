@@ -2,12 +2,13 @@
 # python/tests/test_stubs.py: every public name here exists there and vice versa, with the
 # same parameter names and order).
 import os
-from typing import Any, Dict, Iterable, List, Mapping, Optional, Tuple, Union
+from typing import Any, Callable, Dict, Iterable, List, Mapping, Optional, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
 
 _StrPath = Union[str, "os.PathLike[str]"]
+_Progress = Callable[[int, int], object]  # progress(done, total)
 
 __version__: str
 UNKNOWN: int
@@ -196,7 +197,11 @@ class SequenceMapper:
         occupancy_2d_max_range: Optional[float] = None,
     ) -> None: ...
     def build(
-        self, poses: npt.ArrayLike, frames: Optional[Iterable[int]] = None
+        self,
+        poses: npt.ArrayLike,
+        frames: Optional[Iterable[int]] = None,
+        *,
+        progress: Optional[_Progress] = None,
     ) -> SequenceMapper: ...
     def hit_map(self) -> Dict[str, Any]: ...
     def occupied_cells(self) -> int: ...
@@ -304,8 +309,9 @@ class Slam2D:
     ) -> None: ...
     def add_scan(
         self,
-        ranges: npt.ArrayLike,
         angles: npt.ArrayLike,
+        ranges: npt.ArrayLike,
+        *,
         odometry: Optional[npt.ArrayLike] = None,
         stamp: Optional[float] = None,
     ) -> None: ...
@@ -359,8 +365,9 @@ def read_scan_log(
     path: _StrPath, preset: Optional[str] = None
 ) -> List[Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]]: ...
 def split_and_merge(
-    ranges: npt.ArrayLike,
     angles: npt.ArrayLike,
+    ranges: npt.ArrayLike,
+    *,
     distance_threshold: float = 0.05,
     angle_threshold: float = 0.08726646259971647,
     min_points: int = 5,
@@ -375,7 +382,7 @@ def sensor_profile(points: npt.ArrayLike) -> Dict[str, float]: ...
 def open_scan_source(
     path: _StrPath,
     format: str = "auto",
-    sequence: str = "00",
+    sequence: Optional[str] = None,
     reference_poses: Optional[_StrPath] = None,
     times: Optional[_StrPath] = None,
     topic: Optional[str] = None,
@@ -389,6 +396,8 @@ def run_odometry(
     voxel_size: Optional[float] = None,
     deskew: str = "auto",
     threads: int = 0,
+    *,
+    progress: Optional[_Progress] = None,
 ) -> Dict[str, Any]: ...
 def reference_sensor_poses(
     source: Union[ScanSource, _StrPath], frames: Optional[Iterable[int]] = None
@@ -398,6 +407,8 @@ def run_slam2d(
     frames: Optional[Iterable[int]] = None,
     config: Optional[Slam2DConfig] = None,
     loop_closure: bool = True,
+    *,
+    progress: Optional[_Progress] = None,
 ) -> Slam2D: ...
 def read_g2o(path: _StrPath) -> PoseGraph: ...
 def read_trajectory(
@@ -415,7 +426,7 @@ def evaluate_trajectory(
     estimate_stamps: Optional[npt.ArrayLike] = None,
     reference_stamps: Optional[npt.ArrayLike] = None,
     align: str = "rigid",
-    max_time_diff: float = 0.01,
+    max_time_diff: Optional[float] = None,
 ) -> Dict[str, Any]: ...
 def read_relations(
     path: _StrPath,

@@ -48,11 +48,21 @@ def compare(
         points) and ``octree`` (total_nodes, leaf_nodes, internal_nodes, occupied_leaves,
         empty_leaves, mean_points_per_occupied_leaf, points, max_depth).
     """
+    if isinstance(paths, (str, bytes, os.PathLike)):
+        raise TypeError(f"paths must be an iterable of paths, got the single path {paths!r}: "
+                        "give [path]")
+    keys = {"cell_size", "min_cell_size", "max_points"}
     configs = [dict(c) for c in (STUDY_CONFIGS if configs is None else configs)]
     for c in configs:
-        missing = {"cell_size", "min_cell_size", "max_points"} - set(c)
+        missing, unknown = keys - set(c), set(c) - keys
         if missing:
             raise ValueError(f"config {c} lacks {sorted(missing)}")
+        if unknown:
+            raise ValueError(f"config {c}: unknown key(s) {sorted(unknown)}; the keys are "
+                             f"{sorted(keys)}")
+        m = c["max_points"]
+        if isinstance(m, bool) or not float(m).is_integer():
+            raise ValueError(f"config {c}: max_points must be a whole number, got {m!r}")
     rows = []
     for path in paths:
         points = read_points(path)

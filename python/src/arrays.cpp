@@ -21,6 +21,9 @@ void requireRealNumeric(const py::array& a, const char* name) {
     std::ostringstream msg;
     msg << name << " must be an array of real numbers, got dtype "
         << py::str(a.dtype()).cast<std::string>();
+    if (k == 'O')
+      msg << " (rows of different lengths, or objects numpy cannot read as numbers; give an "
+             "(N, 3) array of numbers, or an object with .points such as an Open3D PointCloud)";
     throw py::type_error(msg.str());
   }
 }
@@ -52,8 +55,15 @@ bool readInPlace(const py::array& a) {
 
 }  // namespace
 
+py::object pointsOf(const py::handle& obj) {
+  if (!py::isinstance<py::array>(obj) && !py::isinstance<py::list>(obj) &&
+      !py::isinstance<py::tuple>(obj) && py::hasattr(obj, "points"))
+    return obj.attr("points");
+  return py::reinterpret_borrow<py::object>(obj);
+}
+
 PointsArray pointsFromArray(const py::handle& obj, const char* name, bool allow_empty) {
-  py::array a = asArray(obj, name);
+  py::array a = asArray(pointsOf(obj), name);
   requireRealNumeric(a, name);
   if (a.ndim() != 2 || (a.shape(1) != 3 && a.shape(1) != 4)) {
     std::ostringstream msg;

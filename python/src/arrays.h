@@ -47,7 +47,12 @@ struct PointsArray {
   std::size_t columns = 0;
 };
 
-/// \brief View `obj` as points (see PointsArray). `name` is used in messages.
+/// \brief The points of `obj`: itself, or its `.points` when it is not an array, list or tuple
+/// but has them (an Open3D PointCloud, a metricmap Scan: duck-typed, Open3D is not needed).
+py::object pointsOf(const py::handle& obj);
+
+/// \brief View `obj` as points (see PointsArray): an array, a list, or an object with a
+/// `.points` that is one (an Open3D PointCloud, duck-typed). `name` is used in messages.
 /// \throws py::type_error for a non-numeric dtype (complex, object, strings) or a non-array
 /// \throws py::value_error for another shape, no rows (unless allow_empty), or a finite
 /// float64 coordinate that float32 cannot hold (|x| > 3.4e38)

@@ -86,6 +86,8 @@ InputError
          const std::string& format) {
         const Trajectory t = trajectoryFrom(poses, stamps, "poses");
         std::string text;
+        if (format == "kitti" && !stamps.is_none())
+          throw py::value_error("KITTI rows have no stamps: format='tum' writes them");
         if (format == "kitti") {
           text = formatKittiTrajectory(t);
         } else if (format == "tum") {
@@ -102,8 +104,9 @@ InputError
       },
       py::arg("path"), py::arg("poses"), py::arg("stamps") = py::none(),
       py::arg("format") = "kitti", R"doc(
-Write a trajectory as KITTI rows (stamps not written) or TUM rows (without stamps: the pose
-index), through a temporary file and a rename.
+Write a trajectory as KITTI rows (no stamps: giving them is a ValueError) or TUM rows
+(without stamps: the pose index), through a temporary file and a rename. TUM stamps must
+increase strictly as written (9 decimals), as :func:`read_trajectory` requires.
 
 Parameters
 ----------
@@ -118,14 +121,28 @@ format : {'kitti', 'tum'}
   m.def(
       "evaluate_trajectory",
       [](ArrayLike estimate, ArrayLike reference, py::object estimate_stamps,
-         py::object reference_stamps, const std::string& align, double max_time_diff) {
+         py::object reference_stamps, const std::string& align,
+         std::optional<double> max_time_diff) {
         const Trajectory est = trajectoryFrom(estimate, estimate_stamps, "estimate");
         const Trajectory ref = trajectoryFrom(reference, reference_stamps, "reference");
-        if (!(max_time_diff >= 0.0) || !std::isfinite(max_time_diff))
-          throw py::value_error("max_time_diff must be finite and >= 0");
+        // Options that pairing by index would ignore are refused.
+        if (estimate_stamps.is_none() != reference_stamps.is_none())
+          throw py::value_error(std::string(estimate_stamps.is_none() ? "reference" : "estimate") +
+                                "_stamps without " +
+                                (estimate_stamps.is_none() ? "estimate" : "reference") +
+                                "_stamps: give both to pair by stamps, or neither to pair by "
+                                "index");
+        if (max_time_diff && estimate_stamps.is_none())
+          throw py::value_error(
+              "max_time_diff applies to pairing by stamps: give estimate_stamps and "
+              "reference_stamps");
         EvaluationConfig config;
+        if (max_time_diff) {
+          if (!(*max_time_diff >= 0.0) || !std::isfinite(*max_time_diff))
+            throw py::value_error("max_time_diff must be finite and >= 0");
+          config.max_time_diff = *max_time_diff;
+        }
         config.alignment = parseAlignmentMode(align);
-        config.max_time_diff = max_time_diff;
         TrajectoryEvaluation e;
         {
           py::gil_scoped_release release;
@@ -178,7 +195,7 @@ format : {'kitti', 'tum'}
       },
       py::arg("estimate"), py::arg("reference"), py::arg("estimate_stamps") = py::none(),
       py::arg("reference_stamps") = py::none(), py::arg("align") = "rigid",
-      py::arg("max_time_diff") = 0.01, R"doc(
+      py::arg("max_time_diff") = py::none(), R"doc(
 ATE, per-frame RPE and KITTI drift of an estimate against a reference (`metricmap evaluate
 --reference`): pair the poses (by stamps when both have them, else by index), align the
 paired positions (Umeyama), then the errors.
@@ -190,8 +207,8 @@ estimate, reference : array_like, shape (N, 4, 4) and (M, 4, 4)
 estimate_stamps, reference_stamps : array_like, shape (N,) and (M,), optional
     Seconds.
 align : {'none', 'rigid', 'sim'}
-max_time_diff : float
-    Largest stamp difference (s) that pairs two poses.
+max_time_diff : float, optional
+    Largest stamp difference (s) that pairs two poses (default 0.01); only with both stamps.
 
 Returns
 -------

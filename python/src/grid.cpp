@@ -31,6 +31,87 @@ py::dict statisticsDict(const GridStatistics& s) {
   return d;
 }
 
+/// The grid's state for pickle: layout (min_index, dims, origin, cell_size), statistics, and
+/// the cells as arrays: indices (M, 3) int64, counts (M,) uint64, means (M, 3) float64,
+/// first_points (M,) uint64.
+py::tuple gridState(const GridResult& r) {
+  const GridLayout& l = r.layout;
+  const GridStatistics& st = r.stats;
+  const py::ssize_t n = static_cast<py::ssize_t>(r.cells.size());
+  py::array_t<std::int64_t> indices({n, py::ssize_t(3)});
+  py::array_t<std::uint64_t> counts(n), first(n);
+  py::array_t<double> means({n, py::ssize_t(3)});
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const GridCell& c = r.cells[static_cast<std::size_t>(i)];
+    for (int k = 0; k < 3; ++k) {
+      indices.mutable_at(i, k) = c.index[k];
+      means.mutable_at(i, k) = c.mean[k];
+    }
+    counts.mutable_at(i) = c.count;
+    first.mutable_at(i) = c.first_point;
+  }
+  return py::make_tuple(
+      py::make_tuple(l.min_index[0], l.min_index[1], l.min_index[2], l.dims[0], l.dims[1],
+                     l.dims[2], l.origin.x(), l.origin.y(), l.origin.z(), l.cell_size),
+      py::make_tuple(st.total_cells, st.occupied_cells, st.empty_cells,
+                     st.mean_points_per_occupied_cell, st.points, st.skipped_points),
+      indices, counts, means, first);
+}
+
+std::shared_ptr<GridResult> gridFromState(const py::tuple& t) {
+  if (t.size() != 6) throw py::value_error("Grid: not a pickled grid");
+  const py::tuple l = t[0], st = t[1];
+  if (l.size() != 10 || st.size() != 6) throw py::value_error("Grid: not a pickled grid");
+  auto r = std::make_shared<GridResult>();
+  for (int k = 0; k < 3; ++k) {
+    r->layout.min_index[k] = l[k].cast<std::int64_t>();
+    r->layout.dims[k] = l[3 + k].cast<std::uint64_t>();
+    r->layout.origin[k] = l[6 + k].cast<double>();
+  }
+  r->layout.cell_size = l[9].cast<double>();
+  r->stats = GridStatistics{st[0].cast<std::uint64_t>(), st[1].cast<std::uint64_t>(),
+                            st[2].cast<std::uint64_t>(), st[3].cast<double>(),
+                            st[4].cast<std::uint64_t>(), st[5].cast<std::uint64_t>()};
+  constexpr int kC = py::array::c_style | py::array::forcecast;
+  const auto indices = py::array_t<std::int64_t, kC>(t[2]);
+  const auto counts = py::array_t<std::uint64_t, kC>(t[3]);
+  const auto means = py::array_t<double, kC>(t[4]);
+  const auto first = py::array_t<std::uint64_t, kC>(t[5]);
+  const py::ssize_t n = counts.size();
+  if (indices.ndim() != 2 || indices.shape(0) != n || indices.shape(1) != 3 || means.ndim() != 2 ||
+      means.shape(0) != n || means.shape(1) != 3 || first.size() != n)
+    throw py::value_error("Grid: not a pickled grid");
+  r->cells.resize(static_cast<std::size_t>(n));
+  for (py::ssize_t i = 0; i < n; ++i) {
+    GridCell& c = r->cells[static_cast<std::size_t>(i)];
+    for (int k = 0; k < 3; ++k) {
+      c.index[k] = indices.at(i, k);
+      c.mean[k] = means.at(i, k);
+    }
+    c.count = counts.at(i);
+    c.first_point = static_cast<std::size_t>(first.at(i));
+  }
+  return r;
+}
+
+bool sameGrid(const GridResult& a, const GridResult& b) {
+  const GridLayout &p = a.layout, &q = b.layout;
+  const GridStatistics &s = a.stats, &t = b.stats;
+  if (p.min_index != q.min_index || p.dims != q.dims || p.origin != q.origin ||
+      p.cell_size != q.cell_size || s.total_cells != t.total_cells ||
+      s.occupied_cells != t.occupied_cells || s.empty_cells != t.empty_cells ||
+      s.mean_points_per_occupied_cell != t.mean_points_per_occupied_cell || s.points != t.points ||
+      s.skipped_points != t.skipped_points || a.cells.size() != b.cells.size())
+    return false;
+  for (std::size_t i = 0; i < a.cells.size(); ++i) {
+    const GridCell &c = a.cells[i], &d = b.cells[i];
+    if (c.index != d.index || c.count != d.count || c.mean != d.mean ||
+        c.first_point != d.first_point)
+      return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 void initGrid(py::module_& m) {
@@ -103,6 +184,14 @@ The array properties are read-only views of the cells held by this object; they 
       .def_property_readonly(
           "cell_size", [](const GridResult& r) { return r.layout.cell_size; }, "Cell edge, metres.")
       .def("__len__", [](const GridResult& r) { return r.cells.size(); })
+      .def(py::pickle(&gridState, &gridFromState))
+      .def(
+          "__eq__",
+          [](const GridResult& self, const py::object& other) {
+            return py::isinstance<GridResult>(other) &&
+                   sameGrid(self, other.cast<const GridResult&>());
+          },
+          py::is_operator())
       .def("__repr__", [](const GridResult& r) {
         return "<metricmap.Grid " + std::to_string(r.cells.size()) + " occupied of " +
                std::to_string(r.stats.total_cells) + " cells>";

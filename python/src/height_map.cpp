@@ -7,8 +7,10 @@
 #include <pybind11/stl.h>
 
 #include "arrays.h"
+#include "metricmap/common/rigid_transform.h"
 #include "metricmap/mapping/floor_fit.h"
 #include "metricmap/mapping/height_map.h"
+#include "object_lock.h"
 
 namespace metricmap::python {
 
@@ -27,19 +29,22 @@ pcl::PointCloud<pcl::PointXYZ> cloudOf(const PointsArray& p) {
 
 Eigen::Isometry3d isometryFrom(const py::handle& obj) {
   const Eigen::Matrix4d m = matrix4From(obj, "to_map");
-  if (!m.row(3).isApprox(Eigen::RowVector4d(0, 0, 0, 1)) ||
-      !(m.topLeftCorner<3, 3>() * m.topLeftCorner<3, 3>().transpose())
-           .isApprox(Eigen::Matrix3d::Identity(), 1e-6))
-    throw py::value_error("to_map must be a rigid transform (rotation, translation, 0 0 0 1)");
+  checkRigidTransform(m, "to_map");  // a rotation (det +1, not a reflection), 0 0 0 1
   Eigen::Isometry3d t;
   t.matrix() = m;
   return t;
 }
 
+/// metricmap.HeightMap: the map and the lock that serialises its calls.
+struct PyHeightMap : HeightMap {
+  using HeightMap::HeightMap;
+  mutable ObjectMutex mutex;
+};
+
 }  // namespace
 
 void initHeightMap(py::module_& m) {
-  py::class_<HeightMap, std::shared_ptr<HeightMap>>(m, "HeightMap", R"doc(
+  py::class_<PyHeightMap, std::shared_ptr<PyHeightMap>>(m, "HeightMap", R"doc(
 Top-down map of point counts per (cell, height bin), accumulated over frames (the
 `metricmap heightmap` map). Map frame: x right, y forward, z up, metres; map_size x map_size
 cells centred on the origin, row 0 the far (forward) edge; height bins as np.digitize(z, z_bins).
@@ -51,7 +56,7 @@ cells centred on the origin, row 0 the far (forward) edge; height bins as np.dig
              p.map_size = map_size;
              p.z_bins = std::move(z_bins);
              p.obstacle_threshold = obstacle_threshold;
-             return std::make_shared<HeightMap>(p);
+             return std::make_shared<PyHeightMap>(p);
            }),
            py::arg("resolution") = 0.05, py::arg("map_size") = 480,
            py::arg("z_bins") = std::vector<double>{0.1, 1.0}, py::arg("obstacle_threshold") = 1,
@@ -59,7 +64,8 @@ cells centred on the origin, row 0 the far (forward) edge; height bins as np.dig
            "edges, m), obstacle_threshold (middle-bin count that marks an obstacle).")
       .def(
           "add_frame",
-          [](HeightMap& self, ArrayLike points, ArrayLike to_map) {
+          [](PyHeightMap& self, ArrayLike points, ArrayLike to_map) {
+            ObjectGuard guard(self.mutex, "HeightMap");
             PointsArray p = pointsFromArray(points, "points", true);
             const Eigen::Isometry3d t = isometryFrom(to_map);
             const pcl::PointCloud<pcl::PointXYZ> cloud = cloudOf(p);
@@ -79,7 +85,7 @@ to_map : array_like, shape (4, 4)
       .def_property_readonly(
           "counts",
           [](py::object self) {
-            const auto& h = self.cast<const HeightMap&>();
+            const auto& h = self.cast<const PyHeightMap&>();
             const py::ssize_t n = static_cast<py::ssize_t>(h.size());
             const py::ssize_t b = static_cast<py::ssize_t>(h.bins());
             const py::ssize_t s = sizeof(std::uint32_t);
@@ -89,7 +95,8 @@ to_map : array_like, shape (4, 4)
           "later frames (the map's own memory).")
       .def_property_readonly(
           "obstacles",
-          [](const HeightMap& h) {
+          [](const PyHeightMap& h) {
+            ObjectGuard guard(h.mutex, "HeightMap");
             const py::ssize_t n = static_cast<py::ssize_t>(h.size());
             py::array_t<bool> a({n, n});
             auto r = a.mutable_unchecked<2>();
@@ -100,7 +107,8 @@ to_map : array_like, shape (4, 4)
           "(map_size, map_size) bool: middle-bin count >= obstacle_threshold.")
       .def_property_readonly(
           "explored",
-          [](const HeightMap& h) {
+          [](const PyHeightMap& h) {
+            ObjectGuard guard(h.mutex, "HeightMap");
             const py::ssize_t n = static_cast<py::ssize_t>(h.size());
             py::array_t<bool> a({n, n});
             auto r = a.mutable_unchecked<2>();
@@ -111,7 +119,8 @@ to_map : array_like, shape (4, 4)
           "(map_size, map_size) bool: cells with any point.")
       .def_property_readonly(
           "statistics",
-          [](const HeightMap& h) {
+          [](const PyHeightMap& h) {
+            ObjectGuard guard(h.mutex, "HeightMap");
             const HeightMapStatistics& s = h.statistics();
             py::dict d;
             d["bin_counts"] = s.bin_counts;
@@ -158,7 +167,7 @@ Returns
 
 Raises
 ------
-RuntimeError
+InputError (a ValueError)
     no plane with at least 100 inliers.
 )doc");
 }

@@ -43,6 +43,9 @@ void initLines(py::module_& m) {
           py::gil_scoped_release release;
           log = readScanLog(path.string(), format ? &*format : nullptr);
         }
+        // What the command prints about skipped lines, as Python warnings.
+        for (const std::string& w : log.warnings)
+          if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
         py::list scans;
         for (const LaserScan& s : log.scans) {
           const py::ssize_t n = static_cast<py::ssize_t>(s.ranges.size());
@@ -56,6 +59,9 @@ void initLines(py::module_& m) {
       py::arg("path"), py::arg("preset") = py::none(), R"doc(
 Read the scans of a 2D laser log: CSV "angle,range", CARMEN (FLASER / ROBOTLASER1; plain,
 .gz, .bz2), or one scan per line with `preset='urg04lx-mines'` (BreezySLAM's exp*.dat).
+
+Lines that cannot be a scan are skipped with a UserWarning each (what `metricmap lines`
+prints).
 
 Returns
 -------
@@ -71,7 +77,7 @@ InputError (an OSError)
 
   m.def(
       "split_and_merge",
-      [](ArrayLike ranges, ArrayLike angles, double distance_threshold, double angle_threshold,
+      [](ArrayLike angles, ArrayLike ranges, double distance_threshold, double angle_threshold,
          std::int64_t min_points, double min_length, double max_gap, const std::string& purge,
          std::optional<double> chi2, double range_sigma, double bearing_sigma) {
         if (min_points < 0) throw py::value_error("min_points must be >= 0");
@@ -93,11 +99,10 @@ InputError (an OSError)
         LaserScan scan;
         scan.ranges.assign(r.data(), r.data() + r.size());
         scan.angles.assign(a.data(), a.data() + a.size());
-        for (std::size_t k = 0; k < scan.ranges.size(); ++k) {
-          // An invalid beam (NaN, <= 0) gives no point; a non-finite angle is refused.
-          if (!std::isfinite(scan.angles[k])) throw py::value_error("angles must be finite");
-          if (!(scan.ranges[k] > 0.0)) scan.ranges[k] = std::nan("");
-        }
+        validateLaserScan(scan);
+        // An invalid beam (NaN, <= 0) gives no point.
+        for (double& range : scan.ranges)
+          if (!(range > 0.0)) range = std::nan("");
         std::vector<LineSegment> segments;
         std::vector<pcl::PointIndices> members;
         {
@@ -143,17 +148,19 @@ InputError (an OSError)
         d["members"] = member_list;
         return d;
       },
-      py::arg("ranges"), py::arg("angles"), py::arg("distance_threshold") = 0.05,
+      py::arg("angles"), py::arg("ranges"), py::kw_only(), py::arg("distance_threshold") = 0.05,
       py::arg("angle_threshold") = 5.0 * 3.14159265358979323846 / 180.0, py::arg("min_points") = 5,
       py::arg("min_length") = 0.1, py::arg("max_gap") = 0.0, py::arg("purge") = "before-merge",
       py::arg("chi2") = py::none(), py::arg("range_sigma") = 0.01,
       py::arg("bearing_sigma") = 0.1 * 3.14159265358979323846 / 180.0, R"doc(
-Split & Merge line segments of one ordered 2D scan (the `metricmap lines` algorithm).
+Split & Merge line segments of one ordered 2D scan (the `metricmap lines` algorithm):
+``split_and_merge(*scan.laser)``; every option is keyword-only.
 
 Parameters
 ----------
-ranges, angles : array_like, shape (B,)
-    Metres and radians, beam order; a range that is NaN or <= 0 is an invalid beam.
+angles, ranges : array_like, shape (B,)
+    Radians (finite, within [-2 pi, 2 pi]) and metres, beam order: the order ``Scan.laser``
+    and :func:`read_scan_log` give. A range that is NaN or <= 0 is an invalid beam.
 distance_threshold : float
     Split where the farthest point is further than this from the chord, metres (> 0).
 angle_threshold : float

@@ -17,6 +17,7 @@
 #include "metricmap/occupancy/log_odds_map.h"
 #include "metricmap/occupancy/occupancy_export.h"
 #include "metricmap/occupancy/octomap_io.h"
+#include "object_lock.h"
 
 namespace metricmap::python {
 
@@ -26,6 +27,7 @@ namespace {
 /// one (the library keeps max_range in the map's parameters).
 struct PyLogOddsMap {
   std::unique_ptr<LogOddsMap> map;
+  mutable ObjectMutex mutex;  ///< serialises the object's calls
 
   void useMaxRange(double max_range) {
     if (!(max_range > 0.0)) max_range = std::numeric_limits<double>::infinity();  // OctoMap: -1
@@ -39,7 +41,7 @@ struct PyLogOddsMap {
 };
 
 CArray<double> queryPoints(const py::handle& obj) {
-  auto a = doublesFromArray(obj, "points");
+  auto a = doublesFromArray(pointsOf(obj), "points");
   if (a.ndim() == 1 && a.shape(0) == 3) a = a.reshape({py::ssize_t(1), py::ssize_t(3)});
   if (a.ndim() != 2 || a.shape(1) != 3)
     throw py::value_error("points must have shape (N, 3) or (3,)");
@@ -53,6 +55,58 @@ py::array_t<double> centres(const LogOddsMap& map, bool occupied) {
   for (std::size_t i = 0; i < c.size(); ++i)
     for (int k = 0; k < 3; ++k) d[3 * i + k] = c[i][k];
   return a;
+}
+
+/// The map's state for pickle: (resolution, prob_hit, prob_miss, clamp_min, clamp_max,
+/// occupancy_threshold, max_range), keys (K, 3) int64, log-odds (K,) float32.
+py::tuple mapState(const PyLogOddsMap& self) {
+  ObjectGuard guard(self.mutex, "LogOddsMap");
+  const LogOddsParams& p = self.map->params();
+  std::vector<std::int64_t> keys;
+  std::vector<float> values;
+  keys.reserve(3 * self.map->knownVoxels());
+  values.reserve(self.map->knownVoxels());
+  self.map->forEachKnown([&](const VoxelKey& k, float l) {
+    keys.insert(keys.end(), {k.x, k.y, k.z});
+    values.push_back(l);
+  });
+  const py::ssize_t n = static_cast<py::ssize_t>(values.size());
+  return py::make_tuple(py::make_tuple(p.resolution, p.prob_hit, p.prob_miss, p.clamp_min,
+                                       p.clamp_max, p.occupancy_threshold, p.max_range),
+                        arrayFrom(keys, {n, 3}), arrayFrom(values, {n}));
+}
+
+std::unique_ptr<PyLogOddsMap> mapFromState(const py::tuple& t) {
+  if (t.size() != 3) throw py::value_error("LogOddsMap: not a pickled map");
+  const auto q = t[0].cast<std::vector<double>>();
+  if (q.size() != 7) throw py::value_error("LogOddsMap: not a pickled map");
+  const LogOddsParams p{q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
+  auto keys = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>(t[1]);
+  auto values = py::array_t<float, py::array::c_style | py::array::forcecast>(t[2]);
+  if (keys.ndim() != 2 || keys.shape(1) != 3 || values.ndim() != 1 ||
+      values.shape(0) != keys.shape(0))
+    throw py::value_error("LogOddsMap: not a pickled map");
+  auto out = std::make_unique<PyLogOddsMap>();
+  out->map = std::make_unique<LogOddsMap>(p);
+  for (py::ssize_t k = 0; k < values.shape(0); ++k)
+    out->map->setLogOdds(VoxelKey{keys.at(k, 0), keys.at(k, 1), keys.at(k, 2)}, values.at(k));
+  return out;
+}
+
+/// Same parameters and the same log-odds in the same voxels.
+bool sameMap(const LogOddsMap& a, const LogOddsMap& b) {
+  const LogOddsParams &p = a.params(), &q = b.params();
+  if (p.resolution != q.resolution || p.prob_hit != q.prob_hit || p.prob_miss != q.prob_miss ||
+      p.clamp_min != q.clamp_min || p.clamp_max != q.clamp_max ||
+      p.occupancy_threshold != q.occupancy_threshold || p.max_range != q.max_range ||
+      a.knownVoxels() != b.knownVoxels())
+    return false;
+  bool same = true;
+  a.forEachKnown([&](const VoxelKey& k, float l) {
+    const std::optional<float> m = b.logOdds(k);
+    same = same && m && *m == l;
+  });
+  return same;
 }
 
 }  // namespace
@@ -111,6 +165,7 @@ occupancy_threshold : float
       .def(
           "insert_point_cloud",
           [](PyLogOddsMap& self, ArrayLike points, ArrayLike origin, double max_range) {
+            ObjectGuard guard(self.mutex, "LogOddsMap");
             PointsArray p = pointsFromArray(points, "points", true);
             const Eigen::Vector3d o = vector3From(origin, "origin");
             if (std::isnan(max_range)) throw py::value_error("max_range must not be NaN");
@@ -156,6 +211,7 @@ CapacityError
       .def(
           "probability",
           [](const PyLogOddsMap& self, ArrayLike points) {
+            ObjectGuard guard(self.mutex, "LogOddsMap");
             auto a = queryPoints(points);
             const std::size_t n = static_cast<std::size_t>(a.shape(0));
             py::array_t<double> out(static_cast<py::ssize_t>(n));
@@ -174,6 +230,7 @@ CapacityError
       .def(
           "log_odds",
           [](const PyLogOddsMap& self, ArrayLike points) {
+            ObjectGuard guard(self.mutex, "LogOddsMap");
             auto a = queryPoints(points);
             const std::size_t n = static_cast<std::size_t>(a.shape(0));
             py::array_t<float> out(static_cast<py::ssize_t>(n));
@@ -191,6 +248,7 @@ CapacityError
       .def(
           "states",
           [](const PyLogOddsMap& self, ArrayLike points) {
+            ObjectGuard guard(self.mutex, "LogOddsMap");
             auto a = queryPoints(points);
             const std::size_t n = static_cast<std::size_t>(a.shape(0));
             py::array_t<std::int8_t> out(static_cast<py::ssize_t>(n));
@@ -208,6 +266,7 @@ CapacityError
       .def(
           "voxels",
           [](const PyLogOddsMap& self) {
+            ObjectGuard guard(self.mutex, "LogOddsMap");
             const std::size_t n = self.map->knownVoxels();
             py::array_t<std::int64_t> keys({py::ssize_t(n), py::ssize_t(3)});
             py::array_t<float> values(static_cast<py::ssize_t>(n));
@@ -228,6 +287,7 @@ CapacityError
       .def(
           "extract_point_cloud",
           [](const PyLogOddsMap& self) {
+            ObjectGuard guard(self.mutex, "LogOddsMap");
             return py::make_tuple(centres(*self.map, true), centres(*self.map, false));
           },
           "(occupied (K, 3), free (F, 3)) float64 voxel centres, as octomap-python's "
@@ -235,6 +295,7 @@ CapacityError
       .def(
           "write",
           [](const PyLogOddsMap& self, const std::filesystem::path& path) {
+            ObjectGuard guard(self.mutex, "LogOddsMap");
             try {
               py::gil_scoped_release release;
               writeOctomap(*self.map, path.string());
@@ -252,6 +313,7 @@ CapacityError
       .def(
           "project_band",
           [](const PyLogOddsMap& self, double z_min, double z_max) {
+            ObjectGuard guard(self.mutex, "LogOddsMap");
             const TrinaryMap t = projectBand(*self.map, z_min, z_max);
             py::array_t<std::uint8_t> cells({py::ssize_t(t.height), py::ssize_t(t.width)});
             if (!t.cells.empty()) std::copy(t.cells.begin(), t.cells.end(), cells.mutable_data());
@@ -280,19 +342,50 @@ ValueError
 )doc")
       .def(
           "merge",
-          [](PyLogOddsMap& self, const PyLogOddsMap& other) { self.map->merge(*other.map); },
+          [](PyLogOddsMap& self, const PyLogOddsMap& other) {
+            PairGuard guard(self.mutex, other.mutex, "LogOddsMap");
+            self.map->merge(*other.map);
+          },
           py::arg("other"), "Add the log-odds of every voxel of `other` (clamped).")
       .def(
-          "clear", [](PyLogOddsMap& self) { self.map->clear(); }, "Forget every voxel.")
+          "clear",
+          [](PyLogOddsMap& self) {
+            ObjectGuard guard(self.mutex, "LogOddsMap");
+            self.map->clear();
+          },
+          "Forget every voxel.")
       .def_property_readonly("resolution",
-                             [](const PyLogOddsMap& self) { return self.map->resolution(); })
+                             [](const PyLogOddsMap& self) {
+                               ObjectGuard guard(self.mutex, "LogOddsMap");
+                               return self.map->resolution();
+                             })
       .def_property_readonly("known_voxels",
-                             [](const PyLogOddsMap& self) { return self.map->knownVoxels(); })
+                             [](const PyLogOddsMap& self) {
+                               ObjectGuard guard(self.mutex, "LogOddsMap");
+                               return self.map->knownVoxels();
+                             })
       .def_property_readonly("occupied_voxels",
-                             [](const PyLogOddsMap& self) { return self.map->occupiedVoxels(); })
+                             [](const PyLogOddsMap& self) {
+                               ObjectGuard guard(self.mutex, "LogOddsMap");
+                               return self.map->occupiedVoxels();
+                             })
       .def_property_readonly("free_voxels",
-                             [](const PyLogOddsMap& self) { return self.map->freeVoxels(); })
+                             [](const PyLogOddsMap& self) {
+                               ObjectGuard guard(self.mutex, "LogOddsMap");
+                               return self.map->freeVoxels();
+                             })
+      .def(py::pickle(&mapState, &mapFromState))
+      .def(
+          "__eq__",
+          [](const PyLogOddsMap& self, const py::object& other) {
+            if (!py::isinstance<PyLogOddsMap>(other)) return false;
+            const PyLogOddsMap& o = other.cast<const PyLogOddsMap&>();
+            PairGuard guard(self.mutex, o.mutex, "LogOddsMap");
+            return sameMap(*self.map, *o.map);
+          },
+          py::is_operator())
       .def("__repr__", [](const PyLogOddsMap& self) {
+        ObjectGuard guard(self.mutex, "LogOddsMap");
         return "<metricmap.LogOddsMap resolution " + std::to_string(self.map->resolution()) + ", " +
                std::to_string(self.map->knownVoxels()) + " known voxels>";
       });

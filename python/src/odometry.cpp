@@ -9,6 +9,7 @@
 #include "arrays.h"
 #include "metricmap/registration/lidar_odometry.h"
 #include "metricmap/sequence/sensor_profile.h"
+#include "object_lock.h"
 
 namespace metricmap::python {
 
@@ -43,6 +44,7 @@ py::dict resultDict(const OdometryResult& r) {
 struct PyOdometry {
   LidarOdometry odometry;
   OdometryResult last;
+  mutable ObjectMutex mutex;  ///< serialises the object's calls
 };
 
 }  // namespace
@@ -115,9 +117,13 @@ scans in acquisition order, each in its sensor frame; the first scan's frame is 
       .def(
           "register_frame",
           [](PyOdometry& self, ArrayLike points, std::optional<ArrayLike> timestamps) {
+            ObjectGuard guard(self.mutex, "LidarOdometry");
             std::vector<Eigen::Vector3d> p = points3d(points);
             std::vector<double> t;
             if (timestamps) {
+              if (!self.odometry.config().deskew)
+                throw py::value_error(
+                    "timestamps are used only by deskew: give deskew=True, or no timestamps");
               auto a = doublesFromArray(*timestamps, "timestamps");
               if (a.ndim() != 1 || static_cast<std::size_t>(a.shape(0)) != p.size())
                 throw py::value_error("timestamps must have shape (N,), one per point");
@@ -137,7 +143,8 @@ Parameters
 points : array_like, shape (N, 3) or (N, 4)
     The scan in its sensor frame, metres; NaN/Inf points are skipped.
 timestamps : array_like, shape (N,), optional
-    Per-point sweep times in [0, 1] (fractions of the frame period), for deskew.
+    Per-point sweep times in [0, 1] (fractions of the frame period), for deskew: only with
+    ``deskew=True``; finite wherever the point is.
 
 Returns
 -------
@@ -148,14 +155,23 @@ Raises
 ------
 InputError (a ValueError)
     empty scan, no finite point or none in range, or too few point pairs.
+ValueError
+    timestamps without deskew, of another length, or not finite where the point is.
+RuntimeError
+    called from within its own call (the object serialises calls from several threads).
 )doc")
       .def_property_readonly(
-          "last_result", [](const PyOdometry& self) { return resultDict(self.last); },
+          "last_result",
+          [](const PyOdometry& self) {
+            ObjectGuard guard(self.mutex, "LidarOdometry");
+            return resultDict(self.last);
+          },
           "dict: what registering the last frame gave (pose, prediction, points_in, "
           "points_used, points_source, correspondences, iterations, threshold, ...).")
       .def_property_readonly(
           "poses",
           [](const PyOdometry& self) {
+            ObjectGuard guard(self.mutex, "LidarOdometry");
             const auto& poses = self.odometry.poses();
             py::array_t<double> a({py::ssize_t(poses.size()), py::ssize_t(4), py::ssize_t(4)});
             double* d = a.mutable_data();
@@ -166,7 +182,11 @@ InputError (a ValueError)
           },
           "(K, 4, 4) float64: every registered scan's pose.")
       .def(
-          "reset", [](PyOdometry& self) { self.odometry.reset(); },
+          "reset",
+          [](PyOdometry& self) {
+            ObjectGuard guard(self.mutex, "LidarOdometry");
+            self.odometry.reset();
+          },
           "Forget every scan: the next becomes the world again.");
 }
 

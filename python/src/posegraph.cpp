@@ -13,6 +13,7 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/posegraph/g2o_io.h"
 #include "metricmap/posegraph/optimize.h"
+#include "object_lock.h"
 #include "posegraph.h"
 
 namespace metricmap::python {
@@ -138,6 +139,7 @@ An edge i -> j measures x_i⁻¹ x_j. Read with :func:`read_g2o`, or build with
       .def(
           "add_vertex",
           [](PyPoseGraph& g, long long id, ArrayLike pose) {
+            ObjectGuard guard(g.mutex, "PoseGraph");
             return g.dimension == 2 ? g.graph2d.addVertex(id, pose2From(pose, "pose"))
                                     : g.graph3d.addVertex(id, pose3From(pose, "pose"));
           },
@@ -149,6 +151,7 @@ An edge i -> j measures x_i⁻¹ x_j. Read with :func:`read_g2o`, or build with
           "add_edge",
           [](PyPoseGraph& g, std::size_t from, std::size_t to, ArrayLike measurement,
              ArrayLike information, bool loop) {
+            ObjectGuard guard(g.mutex, "PoseGraph");
             return g.dimension == 2
                        ? g.graph2d.addEdge(from, to, pose2From(measurement, "measurement"),
                                            informationFrom<3>(information), loop)
@@ -161,11 +164,13 @@ An edge i -> j measures x_i⁻¹ x_j. Read with :func:`read_g2o`, or build with
           "or (6, 6) symmetric positive definite); returns its index.")
       .def("__len__",
            [](const PyPoseGraph& g) {
+             ObjectGuard guard(g.mutex, "PoseGraph");
              return g.dimension == 2 ? g.graph2d.vertexCount() : g.graph3d.vertexCount();
            })
       .def_property_readonly(
           "edge_count",
           [](const PyPoseGraph& g) {
+            ObjectGuard guard(g.mutex, "PoseGraph");
             return g.dimension == 2 ? g.graph2d.edgeCount() : g.graph3d.edgeCount();
           },
           "int: number of edges.")
@@ -175,6 +180,7 @@ An edge i -> j measures x_i⁻¹ x_j. Read with :func:`read_g2o`, or build with
       .def_property_readonly(
           "ids",
           [](const PyPoseGraph& g) {
+            ObjectGuard guard(g.mutex, "PoseGraph");
             std::vector<long long> ids;
             if (g.dimension == 2) {
               for (const auto& v : g.graph2d.vertices()) ids.push_back(v.id);
@@ -187,6 +193,7 @@ An edge i -> j measures x_i⁻¹ x_j. Read with :func:`read_g2o`, or build with
       .def_property_readonly(
           "fixed",
           [](const PyPoseGraph& g) {
+            ObjectGuard guard(g.mutex, "PoseGraph");
             const std::size_t n =
                 g.dimension == 2 ? g.graph2d.vertexCount() : g.graph3d.vertexCount();
             py::array_t<bool> a(static_cast<py::ssize_t>(n));
@@ -199,6 +206,7 @@ An edge i -> j measures x_i⁻¹ x_j. Read with :func:`read_g2o`, or build with
       .def(
           "edges",
           [](const PyPoseGraph& g) {
+            ObjectGuard guard(g.mutex, "PoseGraph");
             return g.dimension == 2 ? edgeArrays(g.graph2d, 3) : edgeArrays(g.graph3d, 7);
           },
           R"doc(
@@ -209,6 +217,7 @@ poses.
       .def(
           "chi2",
           [](const PyPoseGraph& g) {
+            ObjectGuard guard(g.mutex, "PoseGraph");
             return g.dimension == 2 ? g.graph2d.chi2() : g.graph3d.chi2();
           },
           "float: Σ eᵀ Ω e over the edges at the current poses (g2o's chi²).")
@@ -216,6 +225,7 @@ poses.
           "optimize",
           [](PyPoseGraph& g, int max_iterations, int threads, const std::string& odometry_loss,
              const std::string& loop_loss, double loss_scale) {
+            ObjectGuard guard(g.mutex, "PoseGraph");
             PoseGraphOptimizeOptions o;
             o.max_iterations = max_iterations;
             o.threads = threads;
@@ -270,12 +280,14 @@ ValueError
       .def(
           "to_g2o",
           [](const PyPoseGraph& g) {
+            ObjectGuard guard(g.mutex, "PoseGraph");
             return g.dimension == 2 ? formatG2o(g.graph2d) : formatG2o(g.graph3d);
           },
           "str: the graph as g2o text (numbers that read back exactly).")
       .def(
           "write",
           [](const PyPoseGraph& g, const std::filesystem::path& path) {
+            ObjectGuard guard(g.mutex, "PoseGraph");
             try {
               py::gil_scoped_release release;
               if (g.dimension == 2) {

@@ -4,6 +4,7 @@
 
 #include "arrays.h"
 #include "metricmap/posegraph/pose_graph.h"
+#include "object_lock.h"
 
 namespace metricmap::python {
 
@@ -12,6 +13,7 @@ struct PyPoseGraph {
   PoseGraph2D graph2d;
   PoseGraph3D graph3d;
   bool chained_guess = false;
+  mutable ObjectMutex mutex;  ///< serialises the object's calls
 };
 
 }  // namespace metricmap::python

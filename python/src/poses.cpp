@@ -1,5 +1,7 @@
 #include "poses.h"
 
+#include "metricmap/common/rigid_transform.h"
+
 #include <cmath>
 #include <string>
 
@@ -30,14 +32,7 @@ std::vector<Eigen::Isometry3d> posesFrom(const py::handle& obj, const char* name
     Eigen::Matrix4d m;
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) m(i, j) = d[16 * k + 4 * i + j];
-    const std::string which = std::string(name) + "[" + std::to_string(k) + "]";
-    if (!m.allFinite()) throw py::value_error(which + " is not finite");
-    const Eigen::Matrix3d r = m.topLeftCorner<3, 3>();
-    const double orth = (r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
-    if (orth > 1e-3 || std::abs(r.determinant() - 1.0) > 1e-3)
-      throw py::value_error(which + " is not a rigid transform (rotation not orthonormal)");
-    if ((m.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() > 1e-6)
-      throw py::value_error(which + ": the last row must be 0 0 0 1");
+    checkRigidTransform(m, std::string(name) + "[" + std::to_string(k) + "]");
     out[k].matrix() = m;
   }
   return out;
@@ -73,6 +68,7 @@ Pose2D pose2dFrom(const py::handle& obj, const char* name) {
   auto a = doublesFromArray(obj, name);
   if (a.ndim() == 2 && a.shape(0) == 4 && a.shape(1) == 4) {
     const Eigen::Matrix4d m = matrix4From(obj, name);
+    checkRigidTransform(m, name);  // a reflection or a shear has no planar pose
     Eigen::Isometry3d t;
     t.matrix() = m;
     return planar(t);
@@ -99,9 +95,18 @@ Eigen::Isometry3d spatial(const Pose2D& p) {
 std::vector<std::size_t> framesFrom(const py::object& obj, const char* name) {
   std::vector<std::size_t> out;
   if (obj.is_none()) return out;
-  py::array a = py::array::ensure(obj);
+  py::object seq = obj;
+  // An iterator or generator is read once into a list; numpy would see one object.
+  if (!py::isinstance<py::array>(obj) && !py::hasattr(obj, "__len__") &&
+      py::hasattr(obj, "__iter__"))
+    seq = py::list(obj);
+  if (py::isinstance<py::str>(seq) || py::isinstance<py::bytes>(seq))
+    throw py::type_error(std::string(name) + " must be a sequence of integers, got a string");
+  py::array a = py::array::ensure(seq);
   if (!a) throw py::type_error(std::string(name) + " must be a sequence of integers");
-  if (a.size() == 0) return out;
+  if (a.size() == 0)
+    throw py::value_error(std::string(name) +
+                          " is empty: nothing to process (None selects every scan)");
   if (a.dtype().kind() != 'i' && a.dtype().kind() != 'u')
     throw py::type_error(std::string(name) + " must hold integers");
   if (a.ndim() != 1) throw py::value_error(std::string(name) + " must be 1-D");

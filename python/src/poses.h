@@ -44,7 +44,9 @@ Pose2D planar(const Eigen::Isometry3d& t);
 /// \brief A planar pose as a 3D one (z = 0, rotation about z).
 Eigen::Isometry3d spatial(const Pose2D& p);
 
-/// \brief Frame indices (a 1-D array of non-negative integers) or None -> empty vector.
+/// \brief Frame indices (a 1-D sequence or iterable of non-negative integers) or None -> empty
+/// vector (the library's "every scan"). \throws py::value_error for an empty selection, which
+/// would otherwise mean every scan
 std::vector<std::size_t> framesFrom(const py::object& obj, const char* name);
 
 /// \brief A map_server image as a dict: image (H, W) uint8 (row 0 at the top), resolution,

@@ -7,6 +7,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <pybind11/stl.h>
@@ -17,7 +18,9 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/sequence/odometry_run.h"
 #include "metricmap/sequence/sequence_mapper.h"
+#include "object_lock.h"
 #include "poses.h"
+#include "progress.h"
 #include "sequence.h"
 
 namespace metricmap::python {
@@ -70,6 +73,7 @@ struct PyMapper {
   ScanMapperConfig config;
   std::unique_ptr<SequenceMapper> mapper;
   bool built = false;
+  mutable ObjectMutex mutex;  ///< serialises the object's calls
   const ScanMapper& maps() const {
     if (!built) throw py::value_error("no map yet: call build(poses) first");
     return mapper->maps();
@@ -216,13 +220,22 @@ count from the end) and iteration give :class:`Scan` objects, read one at a time
 
   m.def(
       "open_scan_source",
-      [](const std::filesystem::path& path, const std::string& format, const std::string& sequence,
-         std::optional<std::filesystem::path> reference_poses,
+      [](const std::filesystem::path& path, const std::string& format,
+         std::optional<std::string> sequence, std::optional<std::filesystem::path> reference_poses,
          std::optional<std::filesystem::path> times, std::optional<std::string> topic) {
+        // An option the source would ignore is refused, never dropped.
+        const std::string kind = scanSourceKind(path.string(), format);
+        for (auto [given, name] :
+             {std::pair{sequence.has_value(), "sequence"},
+              std::pair{reference_poses.has_value(), "reference_poses"},
+              std::pair{times.has_value(), "times"}, std::pair{topic.has_value(), "topic"}}) {
+          const std::string why = given ? ignoredSourceOption(kind, name) : std::string();
+          if (!why.empty()) throw py::value_error(std::string(name) + " is ignored " + why);
+        }
         ScanSourceOptions o;
         if (topic) o.topic = *topic;
         o.format = format;
-        o.sequence = sequence;
+        if (sequence) o.sequence = *sequence;
         if (reference_poses) o.reference_poses = reference_poses->string();
         if (times) o.times = times->string();
         auto s = std::make_unique<PySource>();
@@ -232,7 +245,7 @@ count from the end) and iteration give :class:`Scan` objects, read one at a time
         }
         return s;
       },
-      py::arg("path"), py::arg("format") = "auto", py::arg("sequence") = "00",
+      py::arg("path"), py::arg("format") = "auto", py::arg("sequence") = py::none(),
       py::arg("reference_poses") = py::none(), py::arg("times") = py::none(),
       py::arg("topic") = py::none(), R"doc(
 Open a scan source (what `metricmap odometry SOURCE` reads).
@@ -245,8 +258,10 @@ path : str or os.PathLike
     a ROS bag where the library reads them.
 format : {'auto', 'kitti', 'folder', 'carmen', 'bag'}
     How to read `path` ('auto': from the path).
-sequence : str
-    KITTI sequence under the root.
+sequence : str, optional
+    KITTI sequence under the root (default '00'). Options the source would ignore
+    (`sequence` off KITTI, `topic` off a bag, `times` or `reference_poses` on a CARMEN log,
+    `times` on a bag) are refused with ValueError.
 reference_poses : str or os.PathLike, optional
     Reference poses (KITTI 12-number or TUM 8-number rows, one per scan) replacing the
     source's own (``poses/NN.txt``, a folder's ``poses.txt``).
@@ -271,7 +286,9 @@ ValueError
       "run_odometry",
       [](py::object source, py::object frames, std::optional<std::string> profile,
          std::optional<double> max_range, std::optional<double> min_range,
-         std::optional<double> voxel_size, const std::string& deskew, unsigned threads) {
+         std::optional<double> voxel_size, const std::string& deskew, unsigned threads,
+         py::object progress) {
+        ProgressWatch watch(progress);
         py::object holder;
         PySource& s = sourceFrom(source, holder);
         OdometryRunOptions o;
@@ -305,14 +322,17 @@ ValueError
         {
           py::gil_scoped_release release;
           std::lock_guard<std::mutex> lock(s.mutex);
-          run = runOdometry(*s.source, o);
+          run = runOdometry(*s.source, o,
+                            [&watch](const OdometryFrame&, std::size_t done, std::size_t total) {
+                              watch(done, total);
+                            });
         }
         return odometryRunDict(run, info);
       },
       py::arg("source"), py::arg("frames") = py::none(), py::arg("profile") = py::none(),
       py::arg("max_range") = py::none(), py::arg("min_range") = py::none(),
       py::arg("voxel_size") = py::none(), py::arg("deskew") = "auto", py::arg("threads") = 0u,
-      R"doc(
+      py::kw_only(), py::arg("progress") = py::none(), R"doc(
 LiDAR odometry over a scan source: what `metricmap odometry` computes (sequence/odometry_run).
 
 Parameters
@@ -331,6 +351,8 @@ deskew : {'auto', 'off', 'azimuth'}
     azimuth of a spinning sensor.
 threads : int
     Threads for the scan-to-map pairing (0: all); the poses do not depend on it.
+progress : callable(done, total), optional, keyword-only
+    Called with the frames done and selected, at most every 20 ms and after the last.
 
 Returns
 -------
@@ -348,7 +370,10 @@ Raises
 InputError
     a scan that cannot be read or registered.
 ValueError
-    frames not strictly increasing or out of range, a bad option.
+    frames empty, not strictly increasing or out of range, a bad option.
+KeyboardInterrupt
+    Ctrl-C (checked between frames); nothing is returned. Any exception `progress` raises
+    likewise stops the run and reaches the caller.
 )doc");
 
   py::class_<PyMapper>(m, "SequenceMapper", R"doc(
@@ -426,21 +451,28 @@ ValueError
 )doc")
       .def(
           "build",
-          [](py::object self, ArrayLike poses, py::object frames) {
+          [](py::object self, ArrayLike poses, py::object frames, py::object progress) {
             PyMapper& p = self.cast<PyMapper&>();
+            ObjectGuard guard(p.mutex, "SequenceMapper");
+            ProgressWatch watch(progress);
             const std::vector<Eigen::Isometry3d> t = posesFrom(poses, "poses");
             const std::vector<std::size_t> f = framesFrom(frames, "frames");
             {
               py::gil_scoped_release release;
               std::lock_guard<std::mutex> lock(p.source->mutex);
               p.built = false;
-              p.mapper->build(t, f);
+              p.mapper->build(t, f,
+                              [&watch](const FrameReport&, std::size_t done, std::size_t total) {
+                                watch(done, total);
+                              });
               p.built = true;
             }
             return self;
           },
-          py::arg("poses"), py::arg("frames") = py::none(), R"doc(
-Forget the maps and fuse the scans `frames` (default: every scan) at `poses`.
+          py::arg("poses"), py::arg("frames") = py::none(), py::kw_only(),
+          py::arg("progress") = py::none(), R"doc(
+Forget the maps and fuse the scans `frames` (default: every scan) at `poses`. While it runs and
+after it is stopped (Ctrl-C, an error) the mapper has no maps: build again.
 
 Parameters
 ----------
@@ -448,7 +480,9 @@ poses : array_like, shape (N, 4, 4)
     Sensor -> map world, one per frame (e.g. ``run_odometry(...)['sensor_poses']`` or
     :func:`reference_sensor_poses`).
 frames : sequence of int, optional
-    Increasing scan indices, as many as poses.
+    Increasing scan indices, as many as poses (not empty).
+progress : callable(done, total), optional, keyword-only
+    Called with the scans fused and selected, at most every 20 ms and after the last.
 
 Returns
 -------
@@ -458,6 +492,7 @@ SequenceMapper
       .def(
           "hit_map",
           [](const PyMapper& p) {
+            ObjectGuard guard(p.mutex, "SequenceMapper");
             const MapImage image = p.maps().map().image();
             py::dict d;
             py::array_t<std::uint32_t> a({py::ssize_t(image.height), py::ssize_t(image.width)});
@@ -473,11 +508,16 @@ The 2D hit map: dict with hits (H, W) uint32 (points per cell, row 0 at the top)
 (m) and origin (world position of the lower-left corner along the plane's two axes).
 )doc")
       .def(
-          "occupied_cells", [](const PyMapper& p) { return p.maps().occupiedCells(); },
+          "occupied_cells",
+          [](const PyMapper& p) {
+            ObjectGuard guard(p.mutex, "SequenceMapper");
+            return p.maps().occupiedCells();
+          },
           "int: hit-map cells with at least `min_hits` hits.")
       .def(
           "write_map",
           [](const PyMapper& p, const std::filesystem::path& path, const std::string& kind) {
+            ObjectGuard guard(p.mutex, "SequenceMapper");
             if (kind == "hits") {
               const MapImage image = p.maps().map().image();
               if (image.width == 0) throw InputError("the map is empty: nothing to write");
@@ -498,7 +538,12 @@ Write a map_server map: `path` (.pgm) and the .yaml beside it; kind 'hits' (occu
       .def(
           "global_cloud",
           [](const PyMapper& p) {
+            ObjectGuard guard(p.mutex, "SequenceMapper");
             ScanMapper::Cloud c;
+            if (!p.config.keep_global_cloud)
+              throw py::value_error(
+                  "no global cloud is kept: make the mapper with "
+                  "keep_global_cloud=True");
             {
               const ScanMapper& maps = p.maps();
               py::gil_scoped_release release;
@@ -510,10 +555,12 @@ Write a map_server map: `path` (.pgm) and the .yaml beside it; kind 'hits' (occu
               for (int k = 0; k < 3; ++k) d[3 * i + k] = c.points[i].data[k];
             return a;
           },
-          "(M, 3) float32 copy of the fused scans in the world (empty unless keep_global_cloud).")
+          "(M, 3) float32 copy of the fused scans in the world. ValueError without "
+          "keep_global_cloud.")
       .def(
           "occupancy_2d",
           [](const PyMapper& p) -> py::object {
+            ObjectGuard guard(p.mutex, "SequenceMapper");
             const LogOddsGrid2D* g = p.maps().occupancy2D();
             if (g == nullptr) return py::none();
             py::dict d;
@@ -534,7 +581,11 @@ The 2D log-odds grid or None: dict with log_odds (H, W) float32 (row r, column c
 known_cells.
 )doc")
       .def_property_readonly(
-          "poses", [](const PyMapper& p) { return posesArray(p.maps().poses()); },
+          "poses",
+          [](const PyMapper& p) {
+            ObjectGuard guard(p.mutex, "SequenceMapper");
+            return posesArray(p.maps().poses());
+          },
           "(N, 4, 4) float64: the poses used in the last build.");
 
   m.def(

@@ -16,23 +16,16 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/slam/slam_2d.h"
 #include "metricmap/slam/slam_2d_run.h"
+#include "object_lock.h"
 #include "posegraph.h"
 #include "poses.h"
+#include "progress.h"
 #include "sequence.h"
+#include "slam_state.h"
 
 namespace metricmap::python {
 
 namespace {
-
-struct PySlam {
-  std::unique_ptr<Slam2D> slam;
-  std::vector<double> stamps;
-  bool finished = false;
-  const Slam2D& finishedSlam() const {
-    if (!finished) throw py::value_error("the map is built by finish(): call it first");
-    return *slam;
-  }
-};
 
 std::vector<double> vectorFrom(const py::handle& obj, const char* name) {
   auto a = doublesFromArray(obj, name);
@@ -73,15 +66,23 @@ std::unique_ptr<PySlam> makeSlam(const std::optional<Slam2DConfig>& config,
   return p;
 }
 
+/// The attribute names of Slam2DConfig, in declaration order (pickle, ==, repr).
+std::vector<std::string>& configFields() {
+  static std::vector<std::string> names;
+  return names;
+}
+
 template <typename T>
 void field(py::class_<Slam2DConfig>& c, const char* name, T Slam2DConfig::*member,
            const char* doc) {
+  configFields().push_back(name);
   c.def_readwrite(name, member, doc);
 }
 
 template <typename T>
 void mapField(py::class_<Slam2DConfig>& c, const char* name, T LogOddsParams::*member,
               const char* doc) {
+  configFields().push_back(name);
   c.def_property(
       name, [member](const Slam2DConfig& s) { return s.map.*member; },
       [member](Slam2DConfig& s, T v) { s.map.*member = v; }, doc);
@@ -168,6 +169,40 @@ parameters are the ``map_*`` attributes.
   c.def(
       "validate", [](const Slam2DConfig& s) { validateSlam2DConfig(s); },
       "Raise ValueError naming the first value out of its range.");
+  c.def(py::pickle(
+      [](const py::object& self) {
+        py::dict d;
+        for (const std::string& name : configFields()) d[name.c_str()] = self.attr(name.c_str());
+        return d;
+      },
+      [](const py::dict& d) {
+        Slam2DConfig config;
+        py::object view = py::cast(&config, py::return_value_policy::reference);
+        for (auto item : d) view.attr(item.first) = item.second;
+        return config;
+      }));
+  c.def(
+      "__eq__",
+      [](const py::object& self, const py::object& other) {
+        if (!py::isinstance<Slam2DConfig>(other)) return false;
+        for (const std::string& name : configFields())
+          if (!self.attr(name.c_str()).equal(other.attr(name.c_str()))) return false;
+        return true;
+      },
+      py::is_operator());
+  c.def("__repr__", [](const py::object& self) {
+    // The attributes that differ from the defaults, as a call that makes this configuration.
+    py::object defaults = py::cast(Slam2DConfig{});
+    std::string out = "Slam2DConfig(";
+    bool first = true;
+    for (const std::string& name : configFields()) {
+      py::object v = self.attr(name.c_str());
+      if (v.equal(defaults.attr(name.c_str()))) continue;
+      out += (first ? "" : ", ") + name + "=" + py::repr(v).cast<std::string>();
+      first = false;
+    }
+    return out + ")";
+  });
 
   py::class_<PySlam>(m, "Slam2D", R"doc(
 2D laser SLAM with submaps and loop closure (Hess et al. 2016, Cartographer's method):
@@ -194,18 +229,18 @@ ValueError
 )doc")
       .def(
           "add_scan",
-          [](PySlam& p, ArrayLike ranges, ArrayLike angles, std::optional<ArrayLike> odometry,
+          [](PySlam& p, ArrayLike angles, ArrayLike ranges, std::optional<ArrayLike> odometry,
              std::optional<double> stamp) {
-            if (p.finished) throw py::value_error("add_scan after finish()");
+            ObjectGuard guard(p.mutex, "Slam2D");
+            if (p.finished()) throw py::value_error("add_scan after finish()");
             LaserScan scan;
-            scan.ranges = vectorFrom(ranges, "ranges");
             scan.angles = vectorFrom(angles, "angles");
-            if (scan.ranges.size() != scan.angles.size())
-              throw py::value_error("ranges and angles must have the same length");
-            for (double a : scan.angles)
-              if (!std::isfinite(a)) throw py::value_error("angles must be finite");
+            scan.ranges = vectorFrom(ranges, "ranges");
             std::optional<Pose2D> odo;
             if (odometry) odo = boundedPose(*odometry, "odometry");
+            if (stamp && !std::isfinite(*stamp))
+              throw py::value_error("stamp must be finite (None: no stamp), got " +
+                                    py::repr(py::float_(*stamp)).cast<std::string>());
             const double t = stamp ? *stamp : std::numeric_limits<double>::quiet_NaN();
             {
               py::gil_scoped_release release;
@@ -213,60 +248,73 @@ ValueError
             }
             p.stamps.push_back(t);
           },
-          py::arg("ranges"), py::arg("angles"), py::arg("odometry") = py::none(),
+          py::arg("angles"), py::arg("ranges"), py::kw_only(), py::arg("odometry") = py::none(),
           py::arg("stamp") = py::none(), R"doc(
-Add the next scan.
+Add the next scan: ``add_scan(*scan.laser, odometry=scan.odometry, stamp=scan.stamp)``.
 
 Parameters
 ----------
+angles : array_like, shape (B,)
+    Radians, counter-clockwise, x forward, within [-2 pi, 2 pi]: the order ``Scan.laser`` and
+    :func:`read_scan_log` give, (angles, ranges).
 ranges : array_like, shape (B,)
     Metres; NaN: no return (the beam is skipped).
-angles : array_like, shape (B,)
-    Radians, counter-clockwise, x forward (e.g. from :func:`read_scan_log` or
-    ``Scan.laser``).
-odometry : array_like, optional
+odometry : array_like, optional, keyword-only
     The robot's raw odometry (base -> odometry world): (x, y, theta) or (4, 4); coordinates
     beyond 1e9 m are refused.
-stamp : float, optional
-    Seconds (the motion filter's time limit applies only with stamps).
+stamp : float, optional, keyword-only
+    Seconds, finite (the motion filter's time limit applies only with stamps).
 
 Raises
 ------
 ValueError
-    lengths differ, non-finite odometry or angles, or after finish().
+    no beams, lengths differ, an angle not finite or beyond 2 pi (ranges given first?),
+    non-finite odometry or stamp, or after finish().
 CapacityError
     the maps outgrow the memory budget.
 )doc")
       .def(
           "finish",
           [](PySlam& p) {
-            if (p.finished) return;
+            ObjectGuard guard(p.mutex, "Slam2D");
+            if (p.finished()) return;
             {
               py::gil_scoped_release release;
               p.slam->finish();
+              p.keepResult();
             }
-            p.finished = true;
           },
           "Optimise the graph once more and build the map; further add_scan calls are refused.")
       .def_property_readonly(
-          "trajectory", [](const PySlam& p) { return poses2dArray(p.slam->trajectory()); },
+          "trajectory",
+          [](const PySlam& p) {
+            ObjectGuard guard(p.mutex, "Slam2D");
+            return poses2dArray(p.result ? p.result->trajectory : p.slam->trajectory());
+          },
           "(N, 3) float64: x (m), y (m), theta (rad) of the robot at every scan added "
           "(after finish: optimised).")
       .def_property_readonly(
-          "stamps", [](const PySlam& p) { return doublesArray(p.stamps); },
+          "stamps",
+          [](const PySlam& p) {
+            ObjectGuard guard(p.mutex, "Slam2D");
+            return doublesArray(p.stamps);
+          },
           "(N,) float64: the stamps given to add_scan (NaN where none), in the order added.")
       .def_property_readonly(
           "node_scans",
           [](const PySlam& p) {
-            std::vector<long long> v(p.slam->nodeScans().begin(), p.slam->nodeScans().end());
+            ObjectGuard guard(p.mutex, "Slam2D");
+            const auto& n = p.result ? p.result->node_scans : p.slam->nodeScans();
+            std::vector<long long> v(n.begin(), n.end());
             return arrayFrom(v, {py::ssize_t(v.size())});
           },
           "(K,) int64: the scan index of every node (graph vertex).")
       .def_property_readonly(
           "loops",
           [](const PySlam& p) {
+            ObjectGuard guard(p.mutex, "Slam2D");
             py::list out;
-            for (const LoopClosure2D& l : p.slam->loops()) {
+            for (const LoopClosure2D& l : p.result ? p.result->loops : p.slam->loops()) {
               py::dict d;
               d["node"] = l.node;
               d["submap"] = l.submap;
@@ -281,16 +329,18 @@ CapacityError
       .def_property_readonly(
           "graph",
           [](const PySlam& p) {
+            ObjectGuard guard(p.mutex, "Slam2D");
             PyPoseGraph g;
             g.dimension = 2;
-            g.graph2d = p.slam->graph();
+            g.graph2d = p.result ? p.result->graph : p.slam->graph();
             return g;
           },
           "PoseGraph: a copy of the pose graph (one vertex per node).")
       .def_property_readonly(
           "stats",
           [](const PySlam& p) {
-            const Slam2DStats& s = p.slam->stats();
+            ObjectGuard guard(p.mutex, "Slam2D");
+            const Slam2DStats& s = p.result ? p.result->stats : p.slam->stats();
             py::dict d;
             d["scans"] = s.scans;
             d["nodes"] = s.nodes;
@@ -313,10 +363,18 @@ CapacityError
           },
           "dict: counts and seconds per phase (Slam2DStats).")
       .def_property_readonly(
-          "config", [](const PySlam& p) { return p.slam->config(); },
+          "config",
+          [](const PySlam& p) {
+            ObjectGuard guard(p.mutex, "Slam2D");
+            return p.result ? p.result->config : p.slam->config();
+          },
           "Slam2DConfig: a copy of the configuration in use.")
       .def(
-          "map", [](const PySlam& p) { return mapDict(p.finishedSlam().map()); },
+          "map",
+          [](const PySlam& p) {
+            ObjectGuard guard(p.mutex, "Slam2D");
+            return mapDict(*p.finishedResult().map);
+          },
           R"doc(
 The final map (after finish): dict with log_odds (H, W) float32 (row r, column c is the cell
 (min_i + c, min_j + r) of `resolution` m, spanning [i r, (i+1) r) x [j r, (j+1) r); NaN
@@ -325,7 +383,8 @@ unknown), min_i, min_j, resolution, occupied_cells, known_cells.
       .def(
           "map_image",
           [](const PySlam& p, const std::string& kind) {
-            const LogOddsGrid2D& g = p.finishedSlam().map();
+            ObjectGuard guard(p.mutex, "Slam2D");
+            const LogOddsGrid2D& g = *p.finishedResult().map;
             if (kind == "trinary") return mapServerDict(g.trinaryImage());
             if (kind == "probability") return mapServerDict(g.probabilityImage());
             throw py::value_error("kind must be 'trinary' or 'probability', got '" + kind + "'");
@@ -338,7 +397,8 @@ lower-left corner, m), mode.
       .def(
           "write_map",
           [](const PySlam& p, const std::filesystem::path& path, const std::string& kind) {
-            const LogOddsGrid2D& g = p.finishedSlam().map();
+            ObjectGuard guard(p.mutex, "Slam2D");
+            const LogOddsGrid2D& g = *p.finishedResult().map;
             if (kind != "trinary" && kind != "probability")
               throw py::value_error("kind must be 'trinary' or 'probability', got '" + kind + "'");
             writeMapImage(path.string(),
@@ -346,12 +406,22 @@ lower-left corner, m), mode.
           },
           py::arg("path"), py::arg("kind") = "trinary",
           "Write the map as map_server files: `path` (.pgm) and the .yaml beside it (what "
-          "`metricmap slam2d --out-map` writes for 'trinary').");
+          "`metricmap slam2d --out-map` writes for 'trinary').")
+      .def(py::pickle(&slamState, &slamFromState))
+      .def("__repr__", [](const PySlam& p) {
+        ObjectGuard guard(p.mutex, "Slam2D");
+        const std::size_t scans = p.stamps.size();
+        return "<metricmap.Slam2D " + std::to_string(scans) + " scans, " +
+               (p.result ? std::to_string(p.result->node_scans.size()) + " nodes, " +
+                               std::to_string(p.result->loops.size()) + " loops, finished>"
+                         : std::string("running>"));
+      });
 
   m.def(
       "run_slam2d",
       [](py::object source, py::object frames, std::optional<Slam2DConfig> config,
-         bool loop_closure) {
+         bool loop_closure, py::object progress) {
+        ProgressWatch watch(progress);
         py::object holder;
         PySource& s = sourceFrom(source, holder);
         const SourceInfo& info = s.source->info();
@@ -359,6 +429,7 @@ lower-left corner, m), mode.
           throw InputError(info.path + ": slam2d needs 2D laser scans (a CARMEN log); this is a " +
                            info.kind + " source of 3D scans");
         std::vector<std::size_t> f = framesFrom(frames, "frames");
+        // None selects every scan (framesFrom refuses an empty selection).
         if (f.empty())
           for (std::size_t k = 0; k < s.source->size(); ++k) f.push_back(k);
         for (std::size_t k = 0; k < f.size(); ++k) {
@@ -375,15 +446,17 @@ lower-left corner, m), mode.
         {
           py::gil_scoped_release release;
           std::lock_guard<std::mutex> lock(s.mutex);
-          Slam2DRun run = runSlam2D(*s.source, f, c, info.path);
+          Slam2DRun run = runSlam2D(
+              *s.source, f, c, info.path,
+              [&watch](std::size_t done, std::size_t total, const Slam2D&) { watch(done, total); });
           p->slam = std::move(run.slam);
           p->stamps = std::move(run.scan_stamps);
+          p->keepResult();
         }
-        p->finished = true;
         return p;
       },
       py::arg("source"), py::arg("frames") = py::none(), py::arg("config") = py::none(),
-      py::arg("loop_closure") = true, R"doc(
+      py::arg("loop_closure") = true, py::kw_only(), py::arg("progress") = py::none(), R"doc(
 Run :class:`Slam2D` over a planar source (a CARMEN log), as `metricmap slam2d` does: the
 source's laser offset as sensor_to_base, each scan's beams, raw odometry and stamp.
 
@@ -395,6 +468,9 @@ frames : sequence of int, optional
 config : Slam2DConfig, optional
 loop_closure : bool
     False: local SLAM only (`--no-loop-closure`).
+progress : callable(done, total), optional, keyword-only
+    Called with the scans done and the scans selected, at most every 20 ms and after the last
+    scan (before the final optimisation).
 
 Returns
 -------
@@ -409,7 +485,10 @@ InputError
 CapacityError
     the maps outgrow the memory budget.
 ValueError
-    a frame out of range, or frames not strictly increasing.
+    a frame out of range, frames empty or not strictly increasing.
+KeyboardInterrupt
+    Ctrl-C (checked between scans); nothing is returned. Any exception `progress` raises
+    likewise stops the run and reaches the caller.
 )doc");
 }
 

@@ -34,7 +34,7 @@ def test_segments_equal_the_cli(cli, data, scans, scan, flags, kwargs):
     ).stdout
     ref = json.loads(out)["scans"][0]["segments"]
     angles, ranges = scans[scan]
-    seg = mm.split_and_merge(ranges, angles, **kwargs)
+    seg = mm.split_and_merge(angles, ranges, **kwargs)
     assert len(ref) > 0 and len(seg["r"]) == len(ref)
     np.testing.assert_array_equal(seg["start"], [s["start"] for s in ref])
     np.testing.assert_array_equal(seg["end"], [s["end"] for s in ref])
@@ -51,7 +51,7 @@ def test_segments_equal_the_cli(cli, data, scans, scan, flags, kwargs):
 def test_fits_are_least_squares_lines(scans):
     # Independent check: every member point lies near its line x cos a + y sin a = r.
     angles, ranges = scans[100]
-    seg = mm.split_and_merge(ranges, angles)
+    seg = mm.split_and_merge(angles, ranges)
     for k, m in enumerate(seg["members"]):
         x = ranges[m] * np.cos(angles[m])
         y = ranges[m] * np.sin(angles[m])
@@ -61,12 +61,12 @@ def test_fits_are_least_squares_lines(scans):
 
 def test_bad_scans():
     with pytest.raises(ValueError):
-        mm.split_and_merge([1.0, 2.0], [0.0])
+        mm.split_and_merge([0.0], [1.0, 2.0])
     with pytest.raises(ValueError):
-        mm.split_and_merge([1.0, 2.0], [0.0, np.nan])
+        mm.split_and_merge([0.0, np.nan], [1.0, 2.0])
     with pytest.raises(ValueError):
-        mm.split_and_merge([1.0, 2.0], [0.0, 0.1], distance_threshold=-1)
+        mm.split_and_merge([0.0, 0.1], [1.0, 2.0], distance_threshold=-1)
     with pytest.raises(ValueError):
-        mm.split_and_merge([1.0, 2.0], [0.0, 0.1], purge="sometimes")
+        mm.split_and_merge([0.0, 0.1], [1.0, 2.0], purge="sometimes")
     empty = mm.split_and_merge([], [])
     assert len(empty["r"]) == 0

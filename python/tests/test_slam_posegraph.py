@@ -94,12 +94,11 @@ def test_slam2d_scan_by_scan_equals_run_slam2d(data, slam_py):
     slam = mm.Slam2D(mm.Slam2DConfig(scans_per_submap=15), sensor_to_base=src.info["sensor_to_base"])
     for k in range(FRAMES):
         scan = src[k]
-        angles, ranges = scan.laser
-        slam.add_scan(ranges, angles, odometry=scan.odometry, stamp=scan.stamp)
+        slam.add_scan(*scan.laser, odometry=scan.odometry, stamp=scan.stamp)
     slam.finish()
     np.testing.assert_array_equal(slam.trajectory, slam_py.trajectory)
     with pytest.raises(ValueError):
-        slam.add_scan([1.0], [0.0])
+        slam.add_scan([0.0], [1.0])
 
 
 def test_slam2d_config_attributes():

@@ -44,6 +44,8 @@ def stub_params(fn):
     names = [a.arg for a in args.posonlyargs + args.args]
     if args.vararg:
         names.append("*" + args.vararg.arg)
+    elif args.kwonlyargs:
+        names.append("*")  # keyword-only from here: pybind11 writes a bare `*`
     names += [a.arg for a in args.kwonlyargs]
     if args.kwarg:
         names.append("**" + args.kwarg.arg)
@@ -56,6 +58,9 @@ def stub_defaults(fn):
     out = {}
     for a, d in zip(args[len(args) - len(fn.args.defaults) :], fn.args.defaults):
         out[a.arg] = ast.literal_eval(d)
+    for a, d in zip(fn.args.kwonlyargs, fn.args.kw_defaults):
+        if d is not None:
+            out[a.arg] = ast.literal_eval(d)
     return out
 
 

@@ -39,19 +39,19 @@ bool looksLikeLaserLog(const std::string& path) {
 
 }  // namespace
 
-std::string optionUnusedBySource(const std::string& kind, const std::string& option) {
-  if (kind.empty()) return std::string();
+std::string ignoredSourceOption(const std::string& kind, const std::string& option) {
   const std::string what = kind == "carmen"   ? "a CARMEN log"
                            : kind == "folder" ? "a folder or list of scans"
                            : kind == "bag"    ? "a bag"
-                                              : "this source";
+                                              : "a KITTI root";
+  if (kind.empty()) return "";
   if (option == "sequence" && kind != "kitti")
     return "on " + what + ": only a KITTI root has sequences";
-  if ((option == "times" || option == "reference") && kind == "carmen")
+  if ((option == "times" || option == "reference_poses") && kind == "carmen")
     return "on a CARMEN log: its lines carry the scans' stamps and odometry poses";
   if (option == "times" && kind == "bag") return "on a bag: its messages carry the scans' stamps";
   if (option == "topic" && kind != "bag") return "on " + what + ": only a bag has topics";
-  return std::string();
+  return "";
 }
 
 std::string scanSourceKind(const std::string& path, const std::string& format) {

@@ -119,11 +119,11 @@ struct ScanSourceOptions {
 /// path (missing, or none of these). Reads nothing but the file system's entries.
 std::string scanSourceKind(const std::string& path, const std::string& format);
 
-/// \brief Why a source of `kind` (as scanSourceKind gives it; "" when unknown) would not use
-/// the option `option` ("sequence", "times", "reference" or "topic"): a phrase such as "on a
-/// CARMEN log: its lines carry the scans' stamps and odometry poses", or "" when the source
-/// uses it (or the kind is unknown, so the opening itself will say what is wrong).
-std::string optionUnusedBySource(const std::string& kind, const std::string& option);
+/// \brief Why a source of `kind` (scanSourceKind) would ignore the option `option` ("sequence",
+/// "times", "reference_poses" or "topic") if it were given, or "" when the option applies (or
+/// the kind is unknown: the source itself refuses the path then). Callers refuse a given option
+/// the source would ignore, with this reason.
+std::string ignoredSourceOption(const std::string& kind, const std::string& option);
 
 /// \brief Open the source at `path`: a KITTI odometry root (has sequences/), a folder of scans
 /// (.pcd .ply .bin .npy, one format), a list file (.txt of scan paths) or a CARMEN log

@@ -126,6 +126,21 @@ std::size_t LaserScan::validBeams() const {
   return n;
 }
 
+void validateLaserScan(const LaserScan& scan) {
+  if (scan.angles.size() != scan.ranges.size())
+    throw std::invalid_argument("scan has " + std::to_string(scan.angles.size()) + " angles but " +
+                                std::to_string(scan.ranges.size()) + " ranges");
+  constexpr double kTwoPi = 6.283185307179586;
+  for (std::size_t k = 0; k < scan.angles.size(); ++k) {
+    const double a = scan.angles[k];
+    if (std::isfinite(a) && std::abs(a) <= kTwoPi) continue;
+    std::ostringstream msg;
+    msg << "beam " << k << ": angle " << a
+        << " rad is not within [-2 pi, 2 pi] (angles first, then ranges)";
+    throw std::invalid_argument(msg.str());
+  }
+}
+
 ScanLineFormat urg04lxMinesFormat() {
   ScanLineFormat f;
   f.skip_tokens = 24;

@@ -191,11 +191,11 @@ std::string formatTumTrajectory(const Trajectory& trajectory) {
   double previous = 0.0;
   for (std::size_t i = 0; i < trajectory.size(); ++i) {
     const Eigen::Isometry3d& pose = trajectory.poses[i];
+    const double stamp = trajectory.hasStamps() ? trajectory.stamps[i] : static_cast<double>(i);
     Eigen::Quaterniond q(pose.linear());
     q.normalize();
     if (q.w() < 0.0) q.coeffs() = -q.coeffs();
     const Eigen::Vector3d t = pose.translation();
-    const double stamp = trajectory.hasStamps() ? trajectory.stamps[i] : static_cast<double>(i);
     // %.9f of a stamp up to 1.8e308 takes 320 characters: the buffer holds every finite value.
     char line[512];
     std::snprintf(line, sizeof line, "%.9f %.9e %.9e %.9e %.9e %.9e %.9e %.9e\n", stamp, t.x(),

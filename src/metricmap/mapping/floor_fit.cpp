@@ -8,6 +8,7 @@
 #include <pcl/sample_consensus/sac_model_perpendicular_plane.h>
 
 #include "metricmap/common/format_number.h"
+#include "metricmap/exceptions.h"
 
 namespace metricmap {
 
@@ -25,7 +26,7 @@ FloorPlane fitFloor(const pcl::PointCloud<pcl::PointXYZ>& camera_cloud, double d
       sample->push_back(p);
     }
   }
-  if (sample->size() < 100) throw std::runtime_error("floor fit: fewer than 100 valid points");
+  if (sample->size() < 100) throw InputError("floor fit: fewer than 100 valid points");
   // What pcl::SACSegmentation (RANSAC, SACMODEL_PERPENDICULAR_PLANE, optimised coefficients)
   // does, on pcl_sample_consensus alone: the segmentation module costs ~0.1 s of start-up.
   auto model = std::make_shared<pcl::SampleConsensusModelPerpendicularPlane<pcl::PointXYZ>>(
@@ -36,14 +37,14 @@ FloorPlane fitFloor(const pcl::PointCloud<pcl::PointXYZ>& camera_cloud, double d
   sac.setMaxIterations(500);
   sac.setProbability(0.99);
   pcl::Indices inliers;
-  if (!sac.computeModel(0)) throw std::runtime_error("floor fit: no plane found");
+  if (!sac.computeModel(0)) throw InputError("floor fit: no plane found");
   sac.getInliers(inliers);
   Eigen::VectorXf coeff(4), refined(4);
   sac.getModelCoefficients(coeff);
   model->optimizeModelCoefficients(inliers, coeff, refined);
   model->selectWithinDistance(refined, distance_threshold, inliers);
   if (inliers.size() < 100 || refined.size() != 4) {
-    throw std::runtime_error("floor fit: no plane found");
+    throw InputError("floor fit: no plane found");
   }
   const std::vector<float> values(refined.data(), refined.data() + 4);
   FloorPlane f;

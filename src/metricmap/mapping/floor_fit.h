@@ -23,7 +23,7 @@ struct FloorPlane {
 /// \brief RANSAC plane (SACMODEL_PERPENDICULAR_PLANE around the camera's up axis -y, within
 /// 70 degrees) over every `stride`-th finite point.
 /// \throws std::invalid_argument for stride 0 or a threshold that is not finite and > 0
-/// \throws std::runtime_error when no plane with at least 100 inliers is found
+/// \throws InputError (a std::runtime_error) when no plane with at least 100 inliers is found
 FloorPlane fitFloor(const pcl::PointCloud<pcl::PointXYZ>& camera_cloud, double distance_threshold,
                     std::size_t stride = 4);
 

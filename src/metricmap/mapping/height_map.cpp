@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "metricmap/common/rigid_transform.h"
 #include "metricmap/detail/fast_floor.h"
@@ -93,6 +95,12 @@ std::size_t HeightMap::exploredCells() const {
 }
 
 Eigen::Isometry3d cameraToMap(double height, double pitch_rad, double yaw_rad) {
+  for (auto [value, name] :
+       {std::pair{height, "height"}, std::pair{pitch_rad, "pitch"}, std::pair{yaw_rad, "yaw"}})
+    if (!std::isfinite(value))
+      throw std::invalid_argument(std::string("camera pose: ") + name + " is not finite");
+  if (std::abs(height) > kMaxTranslation)
+    throw std::invalid_argument("camera pose: height beyond 1e6 m");
   Eigen::Matrix3d level;  // optical (x right, y down, z forward) -> map (x right, y forward, z up)
   level << 1, 0, 0, 0, 0, 1, 0, -1, 0;
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();

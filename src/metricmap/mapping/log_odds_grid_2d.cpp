@@ -86,6 +86,29 @@ LogOddsGrid2D::LogOddsGrid2D(const LogOddsParams& params) : params_(params) {
   threshold_ = logOddsOf(params_.occupancy_threshold);
 }
 
+LogOddsGrid2D::LogOddsGrid2D(const LogOddsParams& params, std::int64_t min_i, std::int64_t min_j,
+                             std::int64_t width, std::int64_t height, std::vector<float> cells)
+    : LogOddsGrid2D(params) {
+  constexpr std::int64_t kReach = std::int64_t{1} << 30;
+  if (width < 0 || height < 0 || (width == 0) != (height == 0) ||
+      (width > 0 &&
+       static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) != cells.size()) ||
+      (width == 0 && !cells.empty()))
+    throw std::invalid_argument("a saved 2D grid: " + std::to_string(cells.size()) + " cells for " +
+                                std::to_string(width) + " x " + std::to_string(height));
+  if (std::abs(min_i) > kReach || std::abs(min_j) > kReach || width > kReach || height > kReach)
+    throw std::invalid_argument("a saved 2D grid: corner or size beyond 2^30 cells");
+  for (float l : cells)
+    if (std::isinf(l)) throw std::invalid_argument("a saved 2D grid: an infinite cell");
+  checkMemory(cells.size(), sizeof(float) + sizeof(std::uint32_t), "a saved 2D occupancy grid");
+  i0_ = width > 0 ? min_i : 0;
+  j0_ = width > 0 ? min_j : 0;
+  w_ = width;
+  h_ = height;
+  cells_ = std::move(cells);
+  marks_.assign(cells_.size(), 0);
+}
+
 void LogOddsGrid2D::growTo(std::int64_t i_lo, std::int64_t j_lo, std::int64_t i_hi,
                            std::int64_t j_hi) {
   if (w_ > 0 && i_lo >= i0_ && j_lo >= j0_ && i_hi < i0_ + w_ && j_hi < j0_ + h_) return;

@@ -28,6 +28,12 @@ class LogOddsGrid2D {
  public:
   /// \throws std::invalid_argument naming the first bad parameter (validateLogOddsParams)
   explicit LogOddsGrid2D(const LogOddsParams& params);
+  /// \brief A grid holding `cells` (log-odds, NaN unknown; the layout of data()) over
+  /// [min_i, min_i + width) x [min_j, min_j + height): one saved before, as it was.
+  /// \throws std::invalid_argument for a bad parameter, a negative size or one that is not
+  /// width x height, a corner beyond +-2^30 cells, or an infinite cell
+  LogOddsGrid2D(const LogOddsParams& params, std::int64_t min_i, std::int64_t min_j,
+                std::int64_t width, std::int64_t height, std::vector<float> cells);
 
   /// \brief Cast the beams from `origin` to each of `ends` (world plane coordinates, m).
   /// Non-finite end points are skipped.

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iostream>
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -23,6 +25,41 @@ namespace metricmap {
 namespace {
 
 constexpr std::int64_t kOctoMaxVal = 32768;  // OctoMap's key of coordinate 0 (16 levels)
+
+/// liboctomap as Debian builds it prints progress lines ("Reading octree type OcTree", "Done
+/// (N nodes)") on std::cerr while it reads and writes; the library's callers did not ask for
+/// them. While at least one QuietCerr lives, std::cerr (one stream per process) writes nothing.
+class QuietCerr {
+ public:
+  QuietCerr() {
+    std::lock_guard<std::mutex> lock(mutex());
+    if (state().count++ == 0) state().saved = std::cerr.rdbuf(&state().null);
+  }
+  ~QuietCerr() {
+    std::lock_guard<std::mutex> lock(mutex());
+    if (--state().count == 0) std::cerr.rdbuf(state().saved);
+  }
+  QuietCerr(const QuietCerr&) = delete;
+  QuietCerr& operator=(const QuietCerr&) = delete;
+
+ private:
+  struct NullBuffer : std::streambuf {
+    int overflow(int c) override { return traits_type::not_eof(c); }
+  };
+  struct State {
+    NullBuffer null;
+    std::streambuf* saved = nullptr;
+    int count = 0;
+  };
+  static State& state() {
+    static State s;
+    return s;
+  }
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+};
 
 bool endsWith(const std::string& s, const std::string& suffix) {
   if (s.size() < suffix.size()) return false;
@@ -73,7 +110,11 @@ void writeOctomap(const LogOddsMap& map, const std::string& path) {
     throw std::invalid_argument(outputDisplayName(path) + ": OctoMap files end in .bt or .ot");
   std::unique_ptr<octomap::OcTree> tree = toOcTree(map);
   std::ostringstream out(std::ios::binary);
-  const bool ok = binary ? tree->writeBinary(out) : tree->write(out);
+  bool ok = false;
+  {
+    QuietCerr quiet;
+    ok = binary ? tree->writeBinary(out) : tree->write(out);
+  }
   if (!ok || !out)
     throw std::runtime_error(outputDisplayName(path) + ": liboctomap could not serialise the map");
   writeTextAtomic(path, out.str());
@@ -98,16 +139,19 @@ std::unique_ptr<octomap::OcTree> parseTree(const std::string& bytes, const Octom
                                            const LogOddsParams& p, const std::string& path) {
   std::unique_ptr<octomap::OcTree> tree;
   std::istringstream in(bytes, std::ios::binary);
-  if (info.binary) {
-    tree = std::make_unique<octomap::OcTree>(info.resolution);
-    useSensorModel(*tree, p);
-    if (!tree->readBinary(in)) throw InputError(path + ": liboctomap could not read the tree");
-  } else {
-    std::unique_ptr<octomap::AbstractOcTree> any(octomap::AbstractOcTree::read(in));
-    auto* oc = dynamic_cast<octomap::OcTree*>(any.get());
-    if (oc == nullptr) throw InputError(path + ": liboctomap could not read an OcTree");
-    any.release();
-    tree.reset(oc);
+  {
+    QuietCerr quiet;
+    if (info.binary) {
+      tree = std::make_unique<octomap::OcTree>(info.resolution);
+      useSensorModel(*tree, p);
+      if (!tree->readBinary(in)) throw InputError(path + ": liboctomap could not read the tree");
+    } else {
+      std::unique_ptr<octomap::AbstractOcTree> any(octomap::AbstractOcTree::read(in));
+      auto* oc = dynamic_cast<octomap::OcTree*>(any.get());
+      if (oc == nullptr) throw InputError(path + ": liboctomap could not read an OcTree");
+      any.release();
+      tree.reset(oc);
+    }
   }
   return tree;
 }

@@ -69,6 +69,11 @@ PointToPointIcpParams icpParams(const LidarOdometryConfig& c, double threshold,
   return p;
 }
 
+bool finitePoint(const pcl::PointXYZ& p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+bool finitePoint(const Eigen::Vector3d& p) { return p.allFinite(); }
+
 }  // namespace
 
 LidarOdometry::LidarOdometry(const LidarOdometryConfig& config)
@@ -117,6 +122,13 @@ OdometryResult LidarOdometry::registerScan(const Scan& points, const std::vector
     throw std::invalid_argument(label + ": deskew needs one time per point, got " +
                                 std::to_string(times.size()) + " for " +
                                 std::to_string(points.size()) + " points");
+  }
+  if (config_.deskew) {
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      if (!std::isfinite(times[i]) && finitePoint(points[i]))
+        throw std::invalid_argument(label + ": the time of point " + std::to_string(i) +
+                                    " is not finite (" + formatNumber(times[i]) + ")");
+    }
   }
   OdometryResult res;
   res.points_in = points.size();

@@ -61,7 +61,8 @@ class LidarOdometry {
   /// \param name how errors name this scan (default: "frame N", N counted from 0)
   /// \throws InputError naming the scan when it is empty, has no finite point or none in range,
   /// or (a frame after the first) when its registration found fewer than kMinOdometryPairs pairs
-  /// \throws std::invalid_argument when deskew is on and `times` does not match `points`
+  /// \throws std::invalid_argument when deskew is on and `times` does not match `points`, or a
+  /// finite point's time is not finite
   OdometryResult registerFrame(const std::vector<Eigen::Vector3d>& points,
                                const std::vector<double>& times = {}, const std::string& name = {});
   /// \brief The same for a PCL cloud (read in place).

@@ -392,9 +392,10 @@ Slam2D::~Slam2D() = default;
 void Slam2D::addScan(const LaserScan& scan, const std::optional<Pose2D>& odometry, double stamp) {
   Impl& d = *impl_;
   if (d.finished) throw std::logic_error("Slam2D: addScan after finish");
-  if (scan.angles.size() != scan.ranges.size())
-    throw std::invalid_argument("scan has " + std::to_string(scan.angles.size()) + " angles but " +
-                                std::to_string(scan.ranges.size()) + " ranges");
+  validateLaserScan(scan);
+  if (scan.ranges.empty()) throw std::invalid_argument("scan has no beams");
+  if (!std::isnan(stamp) && !std::isfinite(stamp))
+    throw std::invalid_argument("stamp is infinite (NaN: no stamp)");
   if (odometry &&
       !(std::isfinite(odometry->x) && std::isfinite(odometry->y) && std::isfinite(odometry->theta)))
     throw std::invalid_argument("odometry pose is not finite");
