@@ -1,5 +1,6 @@
 // metricmap.ScanSource / Scan / run_odometry / SequenceMapper: the sequence layer
 // (datasets/scan_source.h, sequence/odometry_run.h, sequence/sequence_mapper.h).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -17,6 +18,7 @@
 #include "metricmap/datasets/scan_source.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/sequence/odometry_run.h"
+#include "metricmap/sequence/sensor_profile.h"
 #include "metricmap/sequence/sequence_mapper.h"
 #include "object_lock.h"
 #include "poses.h"
@@ -294,7 +296,8 @@ ValueError
         OdometryRunOptions o;
         o.frames = framesFrom(frames, "frames");
         const SourceInfo& info = s.source->info();
-        if (profile && *profile != "auto" && *profile != "kitti")
+        const std::vector<std::string>& names = sensorProfileNames();
+        if (profile && std::find(names.begin(), names.end(), *profile) == names.end())
           throw py::value_error("profile must be 'auto', 'kitti' or None, got '" + *profile + "'");
         const bool automatic =
             profile ? *profile == "auto" : info.conventions.default_profile == "auto";

@@ -77,4 +77,9 @@ LidarOdometryConfig applyProfile(LidarOdometryConfig config, const SensorProfile
   return config;
 }
 
+const std::vector<std::string>& sensorProfileNames() {
+  static const std::vector<std::string> names = {"auto", "kitti"};
+  return names;
+}
+
 }  // namespace metricmap

@@ -17,6 +17,7 @@
 /// On KITTI's HDL-64E this gives 80 m, 1 m, 3 m, no coarse stage; on the hand-carried scanner of
 /// balm_realworld_dev 30 m, 0.4 m, 2 m, a 1.2 m coarse stage.
 
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -44,6 +45,10 @@ struct SensorProfile {
 /// \brief The profile of a scan (sensor frame points; non-finite points skipped).
 /// \throws std::invalid_argument when the scan has fewer than 100 finite points at a range > 0
 SensorProfile profileScan(const std::vector<Eigen::Vector3d>& points);
+
+/// \brief The sensor profiles a run can be given by name: "auto" (from the first scan) and the
+/// presets ("kitti": LidarOdometryConfig's defaults, tuned on KITTI's HDL-64E).
+const std::vector<std::string>& sensorProfileNames();
 
 /// \brief `config` with the requested values replaced by the profile's. A chosen min_range at
 /// or above max_range becomes 0; a given one is kept.
