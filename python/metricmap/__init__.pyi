@@ -248,6 +248,8 @@ class PoseGraph:
     def to_g2o(self) -> str: ...
     def write(self, path: _StrPath) -> None: ...
 
+def slam2d_parameters() -> List[Dict[str, Any]]: ...
+
 class Slam2DConfig:
     def __init__(self, **kwargs: Any) -> None: ...
     min_range: float
@@ -269,6 +271,7 @@ class Slam2DConfig:
     translation_weight: float
     rotation_weight: float
     refine_iterations: int
+    bicubic: bool
     loop_linear_window: float
     loop_angular_window_deg: float
     loop_min_score: float

@@ -1,5 +1,6 @@
 // metricmap.Slam2D / Slam2DConfig / run_slam2d: the 2D laser SLAM (slam/slam_2d.h).
 #include <cmath>
+#include <deque>
 #include <filesystem>
 #include <limits>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "arrays.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/slam/slam_2d.h"
+#include "metricmap/slam/slam_2d_parameters.h"
 #include "metricmap/slam/slam_2d_run.h"
 #include "object_lock.h"
 #include "posegraph.h"
@@ -72,20 +74,40 @@ std::vector<std::string>& configFields() {
   return names;
 }
 
-template <typename T>
-void field(py::class_<Slam2DConfig>& c, const char* name, T Slam2DConfig::*member,
-           const char* doc) {
-  configFields().push_back(name);
-  c.def_readwrite(name, member, doc);
-}
-
-template <typename T>
-void mapField(py::class_<Slam2DConfig>& c, const char* name, T LogOddsParams::*member,
-              const char* doc) {
-  configFields().push_back(name);
-  c.def_property(
-      name, [member](const Slam2DConfig& s) { return s.map.*member; },
-      [member](Slam2DConfig& s, T v) { s.map.*member = v; }, doc);
+/// One property per declared parameter (slam/slam_2d_parameters.h): names, kinds, docs and
+/// ranges all come from the library's declaration.
+void declaredFields(py::class_<Slam2DConfig>& c) {
+  static std::deque<std::string> docs;  // the docstrings live as long as the module
+  for (const ParameterSpec& spec : slam2DParameterSchema()) {
+    configFields().push_back(spec.name);
+    const std::string name = spec.name;
+    const ParameterKind kind = spec.kind;
+    docs.push_back((spec.unit.empty() ? "" : spec.unit + ": ") + spec.doc + " (" +
+                   parameterRule(spec) + "; default " + spec.default_text + ").");
+    c.def_property(
+        name.c_str(),
+        [name, kind](const Slam2DConfig& s) -> py::object {
+          const double v = slam2DParameterValue(s, name);
+          if (kind == ParameterKind::Switch) return py::bool_(v != 0.0);
+          if (kind == ParameterKind::Count) return py::int_(static_cast<unsigned long long>(v));
+          if (kind == ParameterKind::Integer) return py::int_(static_cast<long long>(v));
+          return py::float_(v);
+        },
+        [name, kind](Slam2DConfig& s, const py::object& v) {
+          const bool is_bool = py::isinstance<py::bool_>(v);
+          if (kind == ParameterKind::Switch) {
+            if (!is_bool) throw py::type_error(name + " must be a bool");
+            return setSlam2DParameterValue(s, name, v.cast<bool>() ? 1.0 : 0.0);
+          }
+          const bool whole = kind != ParameterKind::Real;
+          if (is_bool ||
+              !(py::isinstance<py::int_>(v) || (!whole && py::isinstance<py::float_>(v))))
+            throw py::type_error(name + " must be " + (whole ? "an int" : "a number") + ", got " +
+                                 std::string(py::str(py::type::of(v).attr("__name__"))));
+          setSlam2DParameterValue(s, name, v.cast<double>());
+        },
+        docs.back().c_str());
+  }
 }
 
 }  // namespace
@@ -109,63 +131,29 @@ parameters are the ``map_*`` attributes.
           return config;
         }),
         "Slam2DConfig(**kwargs): the defaults, with the named attributes set.");
-  field(c, "min_range", &Slam2DConfig::min_range, "m: shorter beams are dropped (>= 0).");
-  field(c, "max_range", &Slam2DConfig::max_range, "m: longer beams are dropped.");
-  field(c, "voxel_filter", &Slam2DConfig::voxel_filter, "m: matching keeps one point per square.");
-  field(c, "resolution", &Slam2DConfig::resolution, "m: cell of the submaps.");
-  field(c, "scans_per_submap", &Slam2DConfig::scans_per_submap, "nodes a submap receives.");
-  field(c, "prob_hit", &Slam2DConfig::prob_hit, "submap sensor model: P(occupied | hit).");
-  field(c, "prob_miss", &Slam2DConfig::prob_miss, "submap sensor model: P(occupied | miss).");
-  field(c, "node_min_distance", &Slam2DConfig::node_min_distance, "m moved before a new node.");
-  field(c, "node_min_angle_deg", &Slam2DConfig::node_min_angle_deg, "deg turned before a node.");
-  field(c, "node_max_time", &Slam2DConfig::node_max_time, "s before a new node.");
-  field(c, "local_linear_window", &Slam2DConfig::local_linear_window,
-        "m: local correlative search half-width.");
-  field(c, "local_angular_window_deg", &Slam2DConfig::local_angular_window_deg,
-        "deg: local correlative search half-width.");
-  field(c, "local_angular_window_per_turn", &Slam2DConfig::local_angular_window_per_turn,
-        "share of the predicted turn added to the local angular half-width.");
-  field(c, "weak_direction_min_gain", &Slam2DConfig::weak_direction_min_gain,
-        "score gain over the prediction below which weak directions keep the prediction.");
-  field(c, "weak_direction_information", &Slam2DConfig::weak_direction_information,
-        "information (per cell squared) below which a translation direction is weak.");
-  field(c, "weak_direction_weight", &Slam2DConfig::weak_direction_weight,
-        "Gauss-Newton prior toward the prediction along weak directions (0: off).");
-  field(c, "translation_weight", &Slam2DConfig::translation_weight, "Gauss-Newton prior.");
-  field(c, "rotation_weight", &Slam2DConfig::rotation_weight, "Gauss-Newton prior.");
-  field(c, "refine_iterations", &Slam2DConfig::refine_iterations, "Gauss-Newton steps.");
-  field(c, "loop_linear_window", &Slam2DConfig::loop_linear_window, "m: loop search half-width.");
-  field(c, "loop_angular_window_deg", &Slam2DConfig::loop_angular_window_deg,
-        "deg: loop search half-width.");
-  field(c, "loop_min_score", &Slam2DConfig::loop_min_score, "score a loop match must reach.");
-  field(c, "loop_max_distance", &Slam2DConfig::loop_max_distance, "m: farther submaps skipped.");
-  field(c, "wide_min_node_gap", &Slam2DConfig::wide_min_node_gap, "nodes (wide search).");
-  field(c, "wide_every_n_nodes", &Slam2DConfig::wide_every_n_nodes, "nodes (wide search).");
-  field(c, "wide_idle_nodes", &Slam2DConfig::wide_idle_nodes, "nodes (wide search).");
-  field(c, "wide_linear_window", &Slam2DConfig::wide_linear_window, "m (wide search).");
-  field(c, "wide_angular_window_deg", &Slam2DConfig::wide_angular_window_deg, "deg (wide).");
-  field(c, "loop_every_n_nodes", &Slam2DConfig::loop_every_n_nodes, "one node searched in n.");
-  field(c, "loop_min_node_gap", &Slam2DConfig::loop_min_node_gap, "nodes.");
-  field(c, "loop_min_overlap", &Slam2DConfig::loop_min_overlap, "share of points, [0, 1].");
-  field(c, "loop_max_chi2", &Slam2DConfig::loop_max_chi2, "loop edges beyond are removed.");
-  field(c, "loop_max_submaps", &Slam2DConfig::loop_max_submaps, "submaps per near search.");
-  field(c, "loop_search_points", &Slam2DConfig::loop_search_points, "points scored.");
-  field(c, "branch_and_bound_depth", &Slam2DConfig::branch_and_bound_depth, "levels (1..16).");
-  field(c, "edge_translation_sigma", &Slam2DConfig::edge_translation_sigma, "m.");
-  field(c, "edge_rotation_sigma_deg", &Slam2DConfig::edge_rotation_sigma_deg, "deg.");
-  field(c, "loop_translation_sigma", &Slam2DConfig::loop_translation_sigma, "m.");
-  field(c, "loop_rotation_sigma_deg", &Slam2DConfig::loop_rotation_sigma_deg, "deg.");
-  field(c, "optimize_every_n_nodes", &Slam2DConfig::optimize_every_n_nodes, "nodes.");
-  field(c, "optimize_iterations", &Slam2DConfig::optimize_iterations, "LM steps while running.");
-  field(c, "final_iterations", &Slam2DConfig::final_iterations, "LM steps at the end.");
-  mapField(c, "map_resolution", &LogOddsParams::resolution, "m: cell of the final map.");
-  mapField(c, "map_prob_hit", &LogOddsParams::prob_hit, "final map's sensor model.");
-  mapField(c, "map_prob_miss", &LogOddsParams::prob_miss, "final map's sensor model.");
-  mapField(c, "map_clamp_min", &LogOddsParams::clamp_min, "final map's clamping (probability).");
-  mapField(c, "map_clamp_max", &LogOddsParams::clamp_max, "final map's clamping (probability).");
-  mapField(c, "map_occupancy_threshold", &LogOddsParams::occupancy_threshold,
-           "final map: occupied at or above this probability.");
-  mapField(c, "map_max_range", &LogOddsParams::max_range, "m: final map's beams are cut here.");
+  declaredFields(c);
+  m.def(
+      "slam2d_parameters",
+      [] {
+        py::list out;
+        for (const ParameterSpec& p : slam2DParameterSchema()) {
+          py::dict d;
+          d["name"] = p.name;
+          d["kind"] = parameterKindName(p.kind);
+          d["unit"] = p.unit;
+          d["rule"] = parameterRule(p);
+          d["min"] = p.range.min;
+          d["max"] = p.range.max;
+          d["min_open"] = p.range.min_open;
+          d["max_open"] = p.range.max_open;
+          d["default"] = p.default_text;
+          d["doc"] = p.doc;
+          out.append(d);
+        }
+        return out;
+      },
+      "list[dict]: every Slam2DConfig parameter as the library declares it (name, kind, unit, "
+      "rule, min, max, min_open, max_open, default, doc).");
   c.def(
       "validate", [](const Slam2DConfig& s) { validateSlam2DConfig(s); },
       "Raise ValueError naming the first value out of its range.");

@@ -30,10 +30,8 @@ std::size_t valueAt(const std::string& header, const std::string& key) {
   return header.find_first_not_of(" \t", i + 1);
 }
 
-}  // namespace
-
-NpyArray readNpyPoints(const std::string& path) {
-  const std::string bytes = readRegularFile(path, kMaxNpyBytes);
+/// The header dict's text and where the data starts (versions 1, 2 and 3).
+std::string headerOf(const std::string& path, const std::string& bytes, std::size_t& data_at) {
   static const char kMagic[] = "\x93NUMPY";
   if (bytes.size() < 10 || bytes.compare(0, 6, kMagic, 6) != 0)
     throw InputError(path + ": not a .npy file (bad magic)");
@@ -53,49 +51,59 @@ NpyArray readNpyPoints(const std::string& path) {
     throw InputError(path + ": unsupported .npy version " + std::to_string(major));
   }
   if (header_len > bytes.size() - header_at) throw InputError(path + ": truncated .npy header");
-  const std::string header = bytes.substr(header_at, header_len);
-  const std::size_t data_at = header_at + header_len;
+  data_at = header_at + header_len;
+  return bytes.substr(header_at, header_len);
+}
 
-  // The header is a Python dict literal; only its three keys are read, without a regex (a
-  // hostile header may be 4 GiB long).
-  std::size_t at = valueAt(header, "descr");
-  std::size_t end =
+/// The element size of the header's dtype: '<f4' or '<f8'. The header is a Python dict
+/// literal; only its three keys are read, without a regex (a hostile header may be 4 GiB long).
+std::size_t itemSize(const std::string& path, const std::string& header) {
+  const std::size_t at = valueAt(header, "descr");
+  const std::size_t end =
       at == std::string::npos || header[at] != '\'' ? std::string::npos : header.find('\'', at + 1);
   if (end == std::string::npos) throw InputError(path + ": .npy header has no descr");
   const std::string descr = header.substr(at + 1, end - at - 1);
-  std::size_t item = 0;
-  if (descr == "<f4") {
-    item = 4;
-  } else if (descr == "<f8") {
-    item = 8;
-  } else {
-    throw InputError(path + ": .npy dtype '" + descr.substr(0, 16) +
-                     "' is not a little-endian float32/float64 ('<f4', '<f8')");
-  }
-  at = valueAt(header, "fortran_order");
+  if (descr == "<f4") return 4;
+  if (descr == "<f8") return 8;
+  throw InputError(path + ": .npy dtype '" + descr.substr(0, 16) +
+                   "' is not a little-endian float32/float64 ('<f4', '<f8')");
+}
+
+/// C order required; the shape (N, C) with 3 to 64 columns.
+void readShape(const std::string& path, const std::string& header, NpyArray& a) {
+  std::size_t at = valueAt(header, "fortran_order");
   if (at == std::string::npos) throw InputError(path + ": .npy header has no fortran_order");
   if (header.compare(at, 4, "True") == 0)
     throw InputError(path + ": Fortran-ordered .npy arrays are not read");
   if (header.compare(at, 5, "False") != 0)
     throw InputError(path + ": .npy header has no fortran_order");
   at = valueAt(header, "shape");
-  if (at == std::string::npos || header[at] != '(')
-    throw InputError(path + ": .npy shape is not (N, C): a 2-D point array is expected");
-  end = header.find(')', at);
-  if (end == std::string::npos)
-    throw InputError(path + ": .npy shape is not (N, C): a 2-D point array is expected");
+  const std::string not_2d = path + ": .npy shape is not (N, C): a 2-D point array is expected";
+  if (at == std::string::npos || header[at] != '(') throw InputError(not_2d);
+  const std::size_t end = header.find(')', at);
+  if (end == std::string::npos) throw InputError(not_2d);
   std::string dims = header.substr(at + 1, end - at - 1);
   dims.erase(std::remove_if(dims.begin(), dims.end(), [](char c) { return c == ' '; }), dims.end());
   if (!dims.empty() && dims.back() == ',') dims.pop_back();
   const std::size_t comma = dims.find(',');
   if (comma == std::string::npos || dims.find(',', comma + 1) != std::string::npos)
-    throw InputError(path + ": .npy shape is not (N, C): a 2-D point array is expected");
-  NpyArray a;
+    throw InputError(not_2d);
   a.rows = parseDimension(path, dims.substr(0, comma));
   a.cols = parseDimension(path, dims.substr(comma + 1));
   if (a.cols < 3 || a.cols > 64)
     throw InputError(path + ": .npy shape (" + std::to_string(a.rows) + ", " +
                      std::to_string(a.cols) + ") has not 3 to 64 columns (x y z ...)");
+}
+
+}  // namespace
+
+NpyArray readNpyPoints(const std::string& path) {
+  const std::string bytes = readRegularFile(path, kMaxNpyBytes);
+  std::size_t data_at = 0;
+  const std::string header = headerOf(path, bytes, data_at);
+  const std::size_t item = itemSize(path, header);
+  NpyArray a;
+  readShape(path, header, a);
   const std::size_t available = bytes.size() - data_at;
   if (a.rows > available / (a.cols * item) || a.rows * a.cols * item != available) {
     throw InputError(path + ": .npy data (" + std::to_string(available) +

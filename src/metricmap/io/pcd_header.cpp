@@ -68,6 +68,59 @@ std::uint64_t parseCount(const std::string& path, const std::string& key, const 
   return v;
 }
 
+/// VIEWPOINT tx ty tz qw qx qy qz: finite numbers, a unit quaternion (to 0.01).
+void parseViewpoint(const std::string& path, const std::vector<std::string>& t, PcdHeader& h) {
+  if (t.size() != 8) fail(path, "VIEWPOINT needs 7 numbers (tx ty tz qw qx qy qz)");
+  for (int i = 0; i < 7; ++i) {
+    try {
+      h.viewpoint[i] = parseFiniteDouble(t[i + 1], "VIEWPOINT");
+    } catch (const std::invalid_argument& e) {
+      fail(path, e.what());
+    }
+  }
+  const double qn = h.viewpoint[3] * h.viewpoint[3] + h.viewpoint[4] * h.viewpoint[4] +
+                    h.viewpoint[5] * h.viewpoint[5] + h.viewpoint[6] * h.viewpoint[6];
+  if (!(qn > 1e-12)) fail(path, "VIEWPOINT quaternion is zero");
+  // A rotation's quaternion has norm 1; beyond the TUM reader's tolerance (0.01) the line is
+  // not a sensor pose written with limited digits, and normalising it would guess.
+  if (!(std::fabs(std::sqrt(qn) - 1.0) <= 1e-2)) {
+    fail(path, "VIEWPOINT quaternion (" + std::string(t[4]) + " " + std::string(t[5]) + " " +
+                   std::string(t[6]) + " " + std::string(t[7]) + ") has norm " +
+                   formatNumber(std::sqrt(qn)) + ", not 1 within 0.01: it is not a rotation");
+  }
+  h.has_viewpoint = true;
+}
+
+/// After the header's lines: the field tables agree, the dimensions give POINTS, the point size.
+void finishHeader(const std::string& path, bool have_width, bool have_height, bool have_points,
+                  PcdHeader& h) {
+  if (h.data.empty()) fail(path, "not a PCD file (no DATA line in the header)");
+  if (h.fields.empty()) fail(path, "PCD header has no FIELDS");
+  if (h.counts.empty()) h.counts.assign(h.fields.size(), 1);
+  if (h.sizes.size() != h.fields.size() || h.types.size() != h.fields.size() ||
+      h.counts.size() != h.fields.size()) {
+    fail(path, "PCD header: FIELDS, SIZE, TYPE and COUNT have different lengths");
+  }
+  if (!have_width && !have_height && have_points) {
+    h.width = h.points;
+    h.height = 1;
+  }
+  if (have_points && h.points > 0 && h.width == 0 && h.height == 0) {
+    h.width = h.points;
+    h.height = 1;
+    h.zero_dimensions = true;
+  }
+  if (!have_points) h.points = h.width * h.height;
+  if (h.width * h.height != h.points) {
+    fail(path, "PCD header: WIDTH x HEIGHT (" + std::to_string(h.width) + " x " +
+                   std::to_string(h.height) + ") differs from POINTS " + std::to_string(h.points));
+  }
+  for (std::size_t i = 0; i < h.fields.size(); ++i) {
+    h.point_bytes += static_cast<std::uint64_t>(h.sizes[i]) * h.counts[i];
+    h.values_per_point += static_cast<std::uint64_t>(h.counts[i]);
+  }
+}
+
 void parseHeader(const std::string& path, std::istream& in, PcdHeader& h) {
   bool have_points = false, have_width = false, have_height = false;
   std::vector<std::pair<std::string, std::size_t>> seen;  // header keys and their lines
@@ -118,25 +171,7 @@ void parseHeader(const std::string& path, std::istream& in, PcdHeader& h) {
       h.points = parseCount(path, "POINTS", t[1], 0xFFFFFFFFull);
       have_points = true;
     } else if (key == "VIEWPOINT") {
-      if (t.size() != 8) fail(path, "VIEWPOINT needs 7 numbers (tx ty tz qw qx qy qz)");
-      for (int i = 0; i < 7; ++i) {
-        try {
-          h.viewpoint[i] = parseFiniteDouble(t[i + 1], "VIEWPOINT");
-        } catch (const std::invalid_argument& e) {
-          fail(path, e.what());
-        }
-      }
-      const double qn = h.viewpoint[3] * h.viewpoint[3] + h.viewpoint[4] * h.viewpoint[4] +
-                        h.viewpoint[5] * h.viewpoint[5] + h.viewpoint[6] * h.viewpoint[6];
-      if (!(qn > 1e-12)) fail(path, "VIEWPOINT quaternion is zero");
-      // A rotation's quaternion has norm 1; beyond the TUM reader's tolerance (0.01) the line is
-      // not a sensor pose written with limited digits, and normalising it would guess.
-      if (!(std::fabs(std::sqrt(qn) - 1.0) <= 1e-2)) {
-        fail(path, "VIEWPOINT quaternion (" + std::string(t[4]) + " " + std::string(t[5]) + " " +
-                       std::string(t[6]) + " " + std::string(t[7]) + ") has norm " +
-                       formatNumber(std::sqrt(qn)) + ", not 1 within 0.01: it is not a rotation");
-      }
-      h.has_viewpoint = true;
+      parseViewpoint(path, t, h);
     } else if (key == "DATA") {
       if (t.size() != 2 || (t[1] != "ascii" && t[1] != "binary" && t[1] != "binary_compressed")) {
         fail(path, "DATA must be ascii, binary or binary_compressed");
@@ -145,31 +180,7 @@ void parseHeader(const std::string& path, std::istream& in, PcdHeader& h) {
       break;
     }
   }
-  if (h.data.empty()) fail(path, "not a PCD file (no DATA line in the header)");
-  if (h.fields.empty()) fail(path, "PCD header has no FIELDS");
-  if (h.counts.empty()) h.counts.assign(h.fields.size(), 1);
-  if (h.sizes.size() != h.fields.size() || h.types.size() != h.fields.size() ||
-      h.counts.size() != h.fields.size()) {
-    fail(path, "PCD header: FIELDS, SIZE, TYPE and COUNT have different lengths");
-  }
-  if (!have_width && !have_height && have_points) {
-    h.width = h.points;
-    h.height = 1;
-  }
-  if (have_points && h.points > 0 && h.width == 0 && h.height == 0) {
-    h.width = h.points;
-    h.height = 1;
-    h.zero_dimensions = true;
-  }
-  if (!have_points) h.points = h.width * h.height;
-  if (h.width * h.height != h.points) {
-    fail(path, "PCD header: WIDTH x HEIGHT (" + std::to_string(h.width) + " x " +
-                   std::to_string(h.height) + ") differs from POINTS " + std::to_string(h.points));
-  }
-  for (std::size_t i = 0; i < h.fields.size(); ++i) {
-    h.point_bytes += static_cast<std::uint64_t>(h.sizes[i]) * h.counts[i];
-    h.values_per_point += static_cast<std::uint64_t>(h.counts[i]);
-  }
+  finishHeader(path, have_width, have_height, have_points, h);
 }
 
 void checkAscii(const std::string& path, std::istream& in, PcdHeader& h, std::uint64_t& skipped) {

@@ -102,6 +102,105 @@ const Field* find(const std::vector<Field>& fields, const char* name) {
   return nullptr;
 }
 
+/// The layout: every field inside point_step, no two overlapping (checked in offset order).
+void checkFieldLayout(const std::vector<Field>& fields, std::uint32_t point_step,
+                      MessageReader& r) {
+  std::vector<std::pair<std::uint64_t, std::size_t>> spans;  // (offset, field)
+  spans.reserve(fields.size());
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    const Field& f = fields[i];
+    const std::size_t s = typeSize(f.datatype);
+    if (s == 0) r.fail("field '" + f.name + "' has unknown datatype " + std::to_string(f.datatype));
+    if (f.count == 0) r.fail("field '" + f.name + "' has count 0");
+    const std::uint64_t end = std::uint64_t(f.offset) + std::uint64_t(s) * f.count;
+    if (end > point_step)
+      r.fail("field '" + f.name + "' (offset " + std::to_string(f.offset) + ", " +
+             std::to_string(end - f.offset) + " bytes) reaches beyond point_step " +
+             std::to_string(point_step));
+    spans.emplace_back(f.offset, i);
+  }
+  std::sort(spans.begin(), spans.end());
+  for (std::size_t k = 1; k < spans.size(); ++k) {
+    const Field& g = fields[spans[k - 1].second];
+    const Field& f = fields[spans[k].second];
+    if (f.offset < std::uint64_t(g.offset) + std::uint64_t(typeSize(g.datatype)) * g.count)
+      r.fail("fields '" + g.name + "' and '" + f.name + "' overlap");
+  }
+}
+
+/// The fields a cloud is read from: x, y, z, and intensity and a per-point time when present.
+struct CloudFields {
+  const Field *x = nullptr, *y = nullptr, *z = nullptr, *intensity = nullptr, *time = nullptr;
+  double time_scale = 0.0;  ///< to seconds: 1 for float fields, 1e-9 for integer ones (ns)
+};
+
+CloudFields cloudFields(const std::vector<Field>& fields, MessageReader& r) {
+  CloudFields f;
+  f.x = find(fields, "x");
+  f.y = find(fields, "y");
+  f.z = find(fields, "z");
+  if (!f.x || !f.y || !f.z) r.fail("no x, y and z fields");
+  f.intensity = find(fields, "intensity");
+  for (const char* name : kPointTimeFields)
+    if ((f.time = find(fields, name))) break;
+  if (f.time) {
+    f.time_scale = f.time->datatype == 7 || f.time->datatype == 8 ? 1.0 : 1e-9;
+    if (typeSize(f.time->datatype) < 4)
+      r.fail("time field '" + f.time->name +
+             "' is not float32/float64 (s) or a 32-bit integer (ns)");
+  }
+  return f;
+}
+
+/// One point; false (and counted) when a coordinate is not finite. A finite value no float
+/// holds is refused, not made inf: points are stored as float.
+bool decodePoint(const std::uint8_t* p, const CloudFields& f, bool swap, std::uint64_t index,
+                 MessageReader& r, ScanFile& c) {
+  const double xyz[3] = {value(p + f.x->offset, f.x->datatype, swap),
+                         value(p + f.y->offset, f.y->datatype, swap),
+                         value(p + f.z->offset, f.z->datatype, swap)};
+  const double level =
+      f.intensity ? value(p + f.intensity->offset, f.intensity->datatype, swap) : 0;
+  for (int a = 0; a < 4; ++a) {
+    const double v = a < 3 ? xyz[a] : level;
+    if (beyondFloatRange(v)) {
+      std::ostringstream msg;
+      msg << "point " << index << ": "
+          << (a < 3 ? std::string(1, "xyz"[a]) : std::string("intensity")) << " = " << v
+          << " is beyond the float range (+-3.40282e+38) points are stored in";
+      r.fail(msg.str());
+    }
+  }
+  pcl::PointXYZ q;
+  q.x = static_cast<float>(xyz[0]);
+  q.y = static_cast<float>(xyz[1]);
+  q.z = static_cast<float>(xyz[2]);
+  if (!(std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z))) {
+    ++c.nonfinite_dropped;
+    return false;
+  }
+  c.points.push_back(q);
+  if (f.intensity) c.intensity.push_back(static_cast<float>(level));
+  if (f.time)
+    c.point_times.push_back(value(p + f.time->offset, f.time->datatype, swap) * f.time_scale);
+  return true;
+}
+
+/// Per-point times from the sweep's start, checked finite and within one sweep.
+void normaliseSweepTimes(const Field& time, MessageReader& r, std::vector<double>& times) {
+  if (times.empty()) return;
+  double lo = times.front(), hi = lo;
+  for (double t : times) {
+    if (!std::isfinite(t)) r.fail("time field '" + time.name + "' has a non-finite value");
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+  }
+  if (hi - lo > kMaxSweepSeconds)
+    r.fail("time field '" + time.name + "' spans " + formatNumber(hi - lo) +
+           " s, more than one sweep (at most 10 s; integer fields are read as ns)");
+  for (double& t : times) t -= lo;
+}
+
 }  // namespace
 
 CloudMessage decodePointCloud2(const std::uint8_t* data, std::size_t size,
@@ -126,28 +225,7 @@ CloudMessage decodePointCloud2(const std::uint8_t* data, std::size_t size,
   const std::uint32_t data_size = r.sequenceLength(1);
   const std::uint8_t* bytes = r.bytes(data_size);
   (void)r.boolean();  // is_dense: NaN points are dropped whatever it says
-  // The layout: every field inside point_step, no two overlapping (checked in offset order).
-  std::vector<std::pair<std::uint64_t, std::size_t>> spans;  // (offset, field)
-  spans.reserve(fields.size());
-  for (std::size_t i = 0; i < fields.size(); ++i) {
-    const Field& f = fields[i];
-    const std::size_t s = typeSize(f.datatype);
-    if (s == 0) r.fail("field '" + f.name + "' has unknown datatype " + std::to_string(f.datatype));
-    if (f.count == 0) r.fail("field '" + f.name + "' has count 0");
-    const std::uint64_t end = std::uint64_t(f.offset) + std::uint64_t(s) * f.count;
-    if (end > point_step)
-      r.fail("field '" + f.name + "' (offset " + std::to_string(f.offset) + ", " +
-             std::to_string(end - f.offset) + " bytes) reaches beyond point_step " +
-             std::to_string(point_step));
-    spans.emplace_back(f.offset, i);
-  }
-  std::sort(spans.begin(), spans.end());
-  for (std::size_t k = 1; k < spans.size(); ++k) {
-    const Field& g = fields[spans[k - 1].second];
-    const Field& f = fields[spans[k].second];
-    if (f.offset < std::uint64_t(g.offset) + std::uint64_t(typeSize(g.datatype)) * g.count)
-      r.fail("fields '" + g.name + "' and '" + f.name + "' overlap");
-  }
+  checkFieldLayout(fields, point_step, r);
   const std::uint64_t n = std::uint64_t(out.width) * out.height;
   if (std::uint64_t(out.width) * point_step > row_step)
     r.fail("row_step " + std::to_string(row_step) + " is less than width " +
@@ -155,76 +233,27 @@ CloudMessage decodePointCloud2(const std::uint8_t* data, std::size_t size,
   if (std::uint64_t(row_step) * out.height != data_size)
     r.fail("data holds " + std::to_string(data_size) + " bytes, not row_step " +
            std::to_string(row_step) + " x height " + std::to_string(out.height));
-  const Field* x = find(fields, "x");
-  const Field* y = find(fields, "y");
-  const Field* z = find(fields, "z");
-  if (!x || !y || !z) r.fail("no x, y and z fields");
-  const Field* intensity = find(fields, "intensity");
-  const Field* time = nullptr;
-  for (const char* name : kPointTimeFields)
-    if ((time = find(fields, name))) break;
-  double time_scale = 0.0;
-  if (time) {
-    time_scale = time->datatype == 7 || time->datatype == 8 ? 1.0 : 1e-9;
-    if (typeSize(time->datatype) < 4)
-      r.fail("time field '" + time->name + "' is not float32/float64 (s) or a 32-bit integer (ns)");
-    out.cloud.time_field = time->name;
-  }
+  const CloudFields f = cloudFields(fields, r);
+  if (f.time) out.cloud.time_field = f.time->name;
   // Points are charged to the budget: 12 bytes each, plus intensity and time.
   checkMemory(
-      n, 12 + (intensity ? 4 : 0) + (time ? 8 : 0),
+      n, 12 + (f.intensity ? 4 : 0) + (f.time ? 8 : 0),
       what + ": " + std::to_string(out.width) + " x " + std::to_string(out.height) + " points");
   ScanFile& c = out.cloud;
   c.points.reserve(n);
-  if (intensity) c.intensity.reserve(n);
-  if (time) c.point_times.reserve(n);
+  if (f.intensity) c.intensity.reserve(n);
+  if (f.time) c.point_times.reserve(n);
   const bool swap = big != hostBigEndian();
   for (std::uint32_t row = 0; row < out.height; ++row) {
     for (std::uint32_t col = 0; col < out.width; ++col) {
       const std::uint8_t* p = bytes + std::size_t(row) * row_step + std::size_t(col) * point_step;
-      const double xyz[3] = {value(p + x->offset, x->datatype, swap),
-                             value(p + y->offset, y->datatype, swap),
-                             value(p + z->offset, z->datatype, swap)};
-      const double level = intensity ? value(p + intensity->offset, intensity->datatype, swap) : 0;
-      // Points are stored as float: a finite value no float holds is refused, not made inf
-      for (int a = 0; a < 4; ++a) {
-        const double v = a < 3 ? xyz[a] : level;
-        if (beyondFloatRange(v)) {
-          std::ostringstream msg;
-          msg << "point " << std::uint64_t(row) * out.width + col << ": "
-              << (a < 3 ? std::string(1, "xyz"[a]) : std::string("intensity")) << " = " << v
-              << " is beyond the float range (+-3.40282e+38) points are stored in";
-          r.fail(msg.str());
-        }
-      }
-      pcl::PointXYZ q;
-      q.x = static_cast<float>(xyz[0]);
-      q.y = static_cast<float>(xyz[1]);
-      q.z = static_cast<float>(xyz[2]);
-      if (!(std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z))) {
-        ++c.nonfinite_dropped;
-        continue;
-      }
-      c.points.push_back(q);
-      if (intensity) c.intensity.push_back(static_cast<float>(level));
-      if (time) c.point_times.push_back(value(p + time->offset, time->datatype, swap) * time_scale);
+      decodePoint(p, f, swap, std::uint64_t(row) * out.width + col, r, c);
     }
   }
   c.points.width = static_cast<std::uint32_t>(c.points.size());
   c.points.height = 1;
   c.points.is_dense = true;
-  if (time && !c.point_times.empty()) {
-    double lo = c.point_times.front(), hi = lo;
-    for (double t : c.point_times) {
-      if (!std::isfinite(t)) r.fail("time field '" + time->name + "' has a non-finite value");
-      lo = std::min(lo, t);
-      hi = std::max(hi, t);
-    }
-    if (hi - lo > kMaxSweepSeconds)
-      r.fail("time field '" + time->name + "' spans " + formatNumber(hi - lo) +
-             " s, more than one sweep (at most 10 s; integer fields are read as ns)");
-    for (double& t : c.point_times) t -= lo;
-  }
+  if (f.time) normaliseSweepTimes(*f.time, r, c.point_times);
   return out;
 }
 

@@ -183,19 +183,82 @@ void chainVertices(const std::vector<PendingEdge<Graph>>& edges, const std::stri
   }
 }
 
+/// One EDGE line: ids, measurement and information (the upper triangle, row by row).
+template <typename Graph>
+PendingEdge<Graph> parseEdge(const Tokens& tokens, const std::string& path, std::size_t n) {
+  using T = Traits<Graph>;
+  constexpr std::size_t kInfoValues = Graph::kDim * (Graph::kDim + 1) / 2;
+  const std::string edge_fields = "i j " + std::string(T::kPoseFields) + " and the " +
+                                  std::to_string(kInfoValues) +
+                                  " upper-triangle entries of the information matrix";
+  double values[T::kPoseValues + kInfoValues];
+  requireTokens(tokens, 3 + T::kPoseValues + kInfoValues, edge_fields, path, n);
+  PendingEdge<Graph> e;
+  e.line = n;
+  e.from = parseId(tokens[1], path, n);
+  e.to = parseId(tokens[2], path, n);
+  for (std::size_t i = 0; i < T::kPoseValues + kInfoValues; ++i) {
+    values[i] = lineNumber(tokens[3 + i], path, n);
+  }
+  e.measurement = T::pose(values);
+  const double* upper = values + T::kPoseValues;
+  for (int r = 0; r < Graph::kDim; ++r) {
+    for (int c = r; c < Graph::kDim; ++c) {
+      e.information(r, c) = e.information(c, r) = *upper++;
+    }
+  }
+  atLine(path, n, [&] {
+    Graph::validatePose(e.measurement);
+    Graph::validateInformation(e.information);
+    return 0;
+  });
+  return e;
+}
+
+/// The edges (between vertices the graph has, with a finite chi² at the initial poses) and the
+/// FIX lines (only the vertices they name are fixed then).
+template <typename Graph>
+void addEdgesAndFixes(const std::vector<PendingEdge<Graph>>& edges,
+                      const std::vector<std::pair<std::size_t, std::int64_t>>& fixes,
+                      const std::string& path, Graph& graph) {
+  for (const auto& e : edges) {
+    const auto from = graph.find(e.from);
+    const auto to = graph.find(e.to);
+    if (!from || !to) {
+      throw InputError(lineWhere(path, e.line) + ": the edge names vertex " +
+                       std::to_string(from ? e.to : e.from) + ", which no VERTEX line defines");
+    }
+    atLine(path, e.line, [&] {
+      return graph.addEdge(*from, *to, e.measurement, e.information, e.to - e.from != 1);
+    });
+  }
+  for (std::size_t i = 0; i < graph.edgeCount(); ++i) {
+    if (!std::isfinite(graph.edgeChi2(i))) {
+      throw InputError(lineWhere(path, edges[i].line) +
+                       ": the edge's chi² at the initial poses is not finite (values too large)");
+    }
+  }
+  if (fixes.empty()) return;
+  for (std::size_t i = 0; i < graph.vertexCount(); ++i) graph.setFixed(i, false);
+  for (const auto& [line, id] : fixes) {
+    const auto index = graph.find(id);
+    if (!index) {
+      throw InputError(lineWhere(path, line) + ": FIX names vertex " + std::to_string(id) +
+                       ", which the graph does not have");
+    }
+    graph.setFixed(*index, true);
+  }
+}
+
 template <typename Graph>
 void parseGraph(const std::string& text, const std::string& path, std::size_t first_line,
                 G2oGraph& out, Graph& graph) {
   using T = Traits<Graph>;
-  constexpr std::size_t kInfoValues = Graph::kDim * (Graph::kDim + 1) / 2;
   const std::string vertex_fields = "id " + std::string(T::kPoseFields);
-  const std::string edge_fields = "i j " + std::string(T::kPoseFields) + " and the " +
-                                  std::to_string(kInfoValues) +
-                                  " upper-triangle entries of the information matrix";
   std::vector<std::size_t> vertex_lines;
   std::vector<PendingEdge<Graph>> edges;
   std::vector<std::pair<std::size_t, std::int64_t>> fixes;  // (line, id)
-  double values[T::kPoseValues + kInfoValues];
+  double values[T::kPoseValues];
 
   forEachDataLine(text, [&](std::size_t n, const Tokens& tokens) {
     const std::string_view tag = tokens[0];
@@ -231,60 +294,13 @@ void parseGraph(const std::string& text, const std::string& path, std::size_t fi
       atLine(path, n, [&] { return graph.addVertex(id, T::pose(values)); });
       vertex_lines.push_back(n);
     } else {
-      requireTokens(tokens, 3 + T::kPoseValues + kInfoValues, edge_fields, path, n);
-      PendingEdge<Graph> e;
-      e.line = n;
-      e.from = parseId(tokens[1], path, n);
-      e.to = parseId(tokens[2], path, n);
-      for (std::size_t i = 0; i < T::kPoseValues + kInfoValues; ++i) {
-        values[i] = lineNumber(tokens[3 + i], path, n);
-      }
-      e.measurement = T::pose(values);
-      const double* upper = values + T::kPoseValues;
-      for (int r = 0; r < Graph::kDim; ++r) {
-        for (int c = r; c < Graph::kDim; ++c) {
-          e.information(r, c) = e.information(c, r) = *upper++;
-        }
-      }
-      atLine(path, n, [&] {
-        Graph::validatePose(e.measurement);
-        Graph::validateInformation(e.information);
-        return 0;
-      });
-      edges.push_back(e);
+      edges.push_back(parseEdge<Graph>(tokens, path, n));
     }
   });
 
   out.chained_guess = graph.vertexCount() == 0;
   if (out.chained_guess) chainVertices(edges, path, graph);
-  for (const auto& e : edges) {
-    const auto from = graph.find(e.from);
-    const auto to = graph.find(e.to);
-    if (!from || !to) {
-      throw InputError(lineWhere(path, e.line) + ": the edge names vertex " +
-                       std::to_string(from ? e.to : e.from) + ", which no VERTEX line defines");
-    }
-    atLine(path, e.line, [&] {
-      return graph.addEdge(*from, *to, e.measurement, e.information, e.to - e.from != 1);
-    });
-  }
-  for (std::size_t i = 0; i < graph.edgeCount(); ++i) {
-    if (!std::isfinite(graph.edgeChi2(i))) {
-      throw InputError(lineWhere(path, edges[i].line) +
-                       ": the edge's chi² at the initial poses is not finite (values too large)");
-    }
-  }
-  if (!fixes.empty()) {
-    for (std::size_t i = 0; i < graph.vertexCount(); ++i) graph.setFixed(i, false);
-    for (const auto& [line, id] : fixes) {
-      const auto index = graph.find(id);
-      if (!index) {
-        throw InputError(lineWhere(path, line) + ": FIX names vertex " + std::to_string(id) +
-                         ", which the graph does not have");
-      }
-      graph.setFixed(*index, true);
-    }
-  }
+  addEdgesAndFixes(edges, fixes, path, graph);
 }
 
 /// Appends " VALUE", the shortest decimal text that reads back as the same double.

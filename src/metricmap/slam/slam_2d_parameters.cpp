@@ -1,6 +1,7 @@
 #include "metricmap/slam/slam_2d_parameters.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -273,6 +274,36 @@ void setSlam2DParameter(Slam2DConfig& config, const std::string& name, const std
     config.** b = value == "true";
   } else {
     config.map.*std::get<double LogOddsParams::*>(f) = parseFiniteDouble(value, name);
+  }
+}
+
+double slam2DParameterValue(const Slam2DConfig& config, const std::string& name) {
+  return valueOf(config, find(name).field);
+}
+
+void setSlam2DParameterValue(Slam2DConfig& config, const std::string& name, double value) {
+  const Entry& e = find(name);
+  const ParameterKind kind = kindOf(e.field);
+  if (kind == ParameterKind::Switch && value != 0.0 && value != 1.0)
+    throw std::invalid_argument(name + " must be true or false");
+  if (kind == ParameterKind::Count || kind == ParameterKind::Integer) {
+    const double lo = kind == ParameterKind::Count ? 0.0 : -2147483648.0;
+    const double hi = kind == ParameterKind::Count ? 18446744073709549568.0 : 2147483647.0;
+    if (!(value == std::floor(value) && value >= lo && value <= hi))
+      throw std::invalid_argument(name + " must be a whole number in [" + text(lo) + ", " +
+                                  text(hi) + "], got " + text(value));
+  }
+  const Field& f = e.field;
+  if (auto d = std::get_if<double Slam2DConfig::*>(&f)) {
+    config.** d = value;
+  } else if (auto n = std::get_if<std::size_t Slam2DConfig::*>(&f)) {
+    config.** n = static_cast<std::size_t>(value);
+  } else if (auto k = std::get_if<int Slam2DConfig::*>(&f)) {
+    config.** k = static_cast<int>(value);
+  } else if (auto b = std::get_if<bool Slam2DConfig::*>(&f)) {
+    config.** b = value != 0.0;
+  } else {
+    config.map.*std::get<double LogOddsParams::*>(f) = value;
   }
 }
 

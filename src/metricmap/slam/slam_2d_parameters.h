@@ -34,4 +34,13 @@ std::string slam2DParameter(const Slam2DConfig& config, const std::string& name)
 /// one), a value that is not a number of the field's kind
 void setSlam2DParameter(Slam2DConfig& config, const std::string& name, const std::string& value);
 
+/// \brief The value of `name` as a number (switches 0 or 1, counts whole).
+/// \throws std::invalid_argument for an unknown name
+double slam2DParameterValue(const Slam2DConfig& config, const std::string& name);
+
+/// \brief Set `name` to `value`, checked only for the field's kind (a switch 0 or 1, a count a
+/// whole number that fits): validateSlam2DConfig checks the ranges.
+/// \throws std::invalid_argument naming the parameter
+void setSlam2DParameterValue(Slam2DConfig& config, const std::string& name, double value);
+
 }  // namespace metricmap
