@@ -145,5 +145,5 @@ expect 1 "$tmp/nodir/means.pcd" -- "$MM" grid "$scan" --cell-size 1 --out "$tmp/
 expect 1 "$tmp/nodir/cells.csv" -- "$MM" grid "$scan" --cell-size 1 --cells "$tmp/nodir/cells.csv"
 check "no temporary files left" test -z "$(find "$tmp" -name '*.tmp-*')"
 
-source "$(dirname "$0")/cli_hardening_cases.sh"
+source "$(dirname "$0")/cli_error_cases.sh"
 finish

@@ -31,7 +31,7 @@ using test_support::inputErrorOf;
 
 }  // namespace
 
-TEST(ReaderHardening, CarmenBeamCountsMustBeSmallIntegers) {
+TEST(ReaderLimits, CarmenBeamCountsMustBeSmallIntegers) {
   const std::string m = inputErrorOf([] { readCarmenLog(kRegress + "carmen_flaser_1e20.log"); });
   EXPECT_NE(m.find("no scan found (2 malformed"), std::string::npos) << m;
   // the same lines with honest counts are scans
@@ -46,7 +46,7 @@ TEST(ReaderHardening, CarmenBeamCountsMustBeSmallIntegers) {
   }
 }
 
-TEST(ReaderHardening, PlyAndPcdLayoutsPclCannotTake) {
+TEST(ReaderLimits, PlyAndPcdLayoutsPclCannotTake) {
   pcl::PointCloud<pcl::PointXYZ> cloud;
   for (const char* f :
        {"ply_list_before_xyz.ply", "ply_obj_info_negative_cols.ply", "ply_zero_vertices.ply",
@@ -73,7 +73,7 @@ TEST(ReaderHardening, PlyAndPcdLayoutsPclCannotTake) {
   EXPECT_EQ(cloud[0].z, 300.0f);
 }
 
-TEST(ReaderHardening, CameraFilesCheckEveryNumber) {
+TEST(ReaderLimits, CameraFilesCheckEveryNumber) {
   EXPECT_THROW(readCameraFile(kRegress + "camera_z_factor_abc.xml"), InputError);
   EXPECT_THROW(readCameraFile(kRegress + "camera_deep.json"), InputError);
   std::ifstream in(kRegress + "camera_z_factor_abc.xml");
@@ -92,7 +92,7 @@ TEST(ReaderHardening, CameraFilesCheckEveryNumber) {
     EXPECT_THROW(parseIntrinsics(t), std::invalid_argument) << t;
 }
 
-TEST(ReaderHardening, OneRowDepthImageAndFloatRange) {
+TEST(ReaderLimits, OneRowDepthImageAndFloatRange) {
   DepthImage d;
   d.width = 4;
   d.height = 1;

@@ -44,7 +44,7 @@ std::string flaser(int declared, int given, const std::string& tail) {
   return line + " " + tail + "\n";
 }
 
-TEST(Hardening4, CarmenBeamCountMustMatchTheLine) {
+TEST(InputChecks, CarmenBeamCountMustMatchTheLine) {
   const std::string full = "0 0 0 0 0 0 1.5 host 1.5";
   EXPECT_EQ(readCarmenLog(writeTemp("ok.clf", flaser(180, 180, full))).scans.size(), 1u);
   EXPECT_EQ(readCarmenLog(writeTemp("poses.clf", flaser(180, 180, "0 0 0 0 0 0"))).scans.size(),
@@ -62,7 +62,7 @@ TEST(Hardening4, CarmenBeamCountMustMatchTheLine) {
   }
 }
 
-TEST(Hardening4, RangesBeyondAnyLaserAreNoReturn) {
+TEST(InputChecks, RangesBeyondAnyLaserAreNoReturn) {
   const ScanLog c =
       readCarmenLog(writeTemp("far.clf", "FLASER 3 1e39 2.0 20000 0 0 0 0 0 0 1.5 host 1.5\n"));
   ASSERT_EQ(c.scans.size(), 1u);
@@ -82,7 +82,7 @@ std::string pcdWithViewpoint(const std::string& viewpoint) {
          viewpoint + "\nPOINTS 1\nDATA ascii\n1 2 3\n";
 }
 
-TEST(Hardening4, ViewpointQuaternionMustBeARotation) {
+TEST(InputChecks, ViewpointQuaternionMustBeARotation) {
   pcl::PointCloud<pcl::PointXYZ> cloud;
   const std::string bad = writeTemp("vp2.pcd", pcdWithViewpoint("0 0 0 2 0 0 0"));
   const std::string msg = inputErrorOf([&] { loadCloud(bad, cloud); });
@@ -93,7 +93,7 @@ TEST(Hardening4, ViewpointQuaternionMustBeARotation) {
       loadCloud(writeTemp("vp6.pcd", pcdWithViewpoint("0 0 0 0.707107 0 0 0.707107")), cloud));
 }
 
-TEST(Hardening4, NpyCloudsAreReadByLoadCloud) {
+TEST(InputChecks, NpyCloudsAreReadByLoadCloud) {
   std::string hdr = "{'descr': '<f4', 'fortran_order': False, 'shape': (2, 4), }";
   hdr += std::string(64 - (10 + hdr.size() + 1) % 64, ' ') + "\n";
   std::string bytes = std::string("\x93NUMPY\x01\x00", 8);
@@ -111,7 +111,7 @@ TEST(Hardening4, NpyCloudsAreReadByLoadCloud) {
   EXPECT_FLOAT_EQ(cloud[1].intensity, 8.0f);
 }
 
-TEST(Hardening4, RelationsNameTwoStampsOnce) {
+TEST(InputChecks, RelationsNameTwoStampsOnce) {
   const std::string same = writeTemp("same.txt", "1 1 1 0 0 0 0 0\n");
   EXPECT_NE(inputErrorOf([&] { readRelations(same); }).find("line 1: t1 and t2 are the same"),
             std::string::npos);
@@ -134,7 +134,7 @@ std::vector<Eigen::Isometry3d> positions(const std::vector<Eigen::Vector3d>& p) 
   return out;
 }
 
-TEST(Hardening4, NearlyCollinearPathsAreNotRotatedByNoise) {
+TEST(InputChecks, NearlyCollinearPathsAreNotRotatedByNoise) {
   std::vector<Eigen::Vector3d> ref, est, turn, turn_est;
   for (int i = 0; i < 20; ++i) {
     ref.emplace_back(i, 1e-4 * std::cos(5.0 * i), 1e-4 * std::sin(11.0 * i));
@@ -152,7 +152,7 @@ TEST(Hardening4, NearlyCollinearPathsAreNotRotatedByNoise) {
   EXPECT_LT(Eigen::AngleAxisd(a.rotation).angle(), 1e-3);
 }
 
-TEST(Hardening4, PoseGraphSolverIsPricedAgainstTheBudget) {
+TEST(InputChecks, PoseGraphSolverIsPricedAgainstTheBudget) {
   PoseGraph2D g;
   for (int i = 0; i < 2000; ++i) g.addVertex(i, Pose2D{static_cast<double>(i), 0.0, 0.0});
   for (std::size_t i = 1; i < 2000; ++i)
@@ -166,7 +166,7 @@ TEST(Hardening4, PoseGraphSolverIsPricedAgainstTheBudget) {
   EXPECT_EQ(optimize(g).termination, PoseGraphTermination::Converged);
 }
 
-TEST(Hardening4, RepeatedInputsByIdentity) {
+TEST(InputChecks, RepeatedInputsByIdentity) {
   const std::string a = writeTemp("a.pcd", "x");
   const std::string b = writeTemp("b.pcd", "y");
   const std::string dotted = (kScratch.path / "." / "a.pcd").string();
@@ -184,13 +184,13 @@ TEST(Hardening4, RepeatedInputsByIdentity) {
             std::string::npos);
 }
 
-TEST(Hardening4, FrameNumbersWithALeadingZeroAreRefused) {
+TEST(InputChecks, FrameNumbersWithALeadingZeroAreRefused) {
   EXPECT_THROW(parseFrameList("010"), std::invalid_argument);
   EXPECT_THROW(parseFrameList("0-05"), std::invalid_argument);
   EXPECT_EQ(parseFrameList("0,10").size(), 2u);
 }
 
-TEST(Hardening4, SourceKindWithoutOpening) {
+TEST(InputChecks, SourceKindWithoutOpening) {
   EXPECT_EQ(scanSourceKind(writeTemp("x.clf", ""), "auto"), "carmen");
   EXPECT_EQ(scanSourceKind(kScratch.path.string(), "auto"), "folder");
   EXPECT_EQ(scanSourceKind((kScratch.path / "none").string(), "auto"), "");
