@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <variant>
 
+#include "metricmap/common/format_number.h"
 #include "metricmap/common/parse_number.h"
 
 namespace metricmap {
@@ -230,8 +231,10 @@ std::vector<ParameterSpec> slam2DParameterSchema() {
   const Slam2DConfig defaults;
   std::vector<ParameterSpec> out;
   for (const Entry& e : entries()) {
-    out.push_back(
-        {e.name, kindOf(e.field), e.unit, e.range, e.doc, slam2DParameter(defaults, e.name)});
+    const ParameterKind kind = kindOf(e.field);
+    const std::string shown = kind == ParameterKind::Real ? formatNumber(valueOf(defaults, e.field))
+                                                          : slam2DParameter(defaults, e.name);
+    out.push_back({e.name, kind, e.unit, e.range, e.doc, shown});
   }
   return out;
 }
