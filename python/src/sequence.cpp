@@ -202,8 +202,8 @@ count from the end) and iteration give :class:`Scan` objects, read one at a time
           "__getitem__",
           [](PySource& s, py::ssize_t i) {
             const std::size_t k = checkedIndex(s, i);
+            ObjectGuard guard(s.mutex, "ScanSource");
             py::gil_scoped_release release;
-            std::lock_guard<std::mutex> lock(s.mutex);
             return std::make_unique<Scan>(s.source->scan(k));
           },
           py::arg("index"))
@@ -323,8 +323,8 @@ ValueError
         }
         OdometryRun run;
         {
+          ObjectGuard guard(s.mutex, "ScanSource");
           py::gil_scoped_release release;
-          std::lock_guard<std::mutex> lock(s.mutex);
           run = runOdometry(*s.source, o,
                             [&watch](const OdometryFrame&, std::size_t done, std::size_t total) {
                               watch(done, total);
@@ -461,8 +461,8 @@ ValueError
             const std::vector<Eigen::Isometry3d> t = posesFrom(poses, "poses");
             const std::vector<std::size_t> f = framesFrom(frames, "frames");
             {
+              ObjectGuard source_guard(p.source->mutex, "ScanSource");
               py::gil_scoped_release release;
-              std::lock_guard<std::mutex> lock(p.source->mutex);
               p.built = false;
               p.mapper->build(t, f,
                               [&watch](const FrameReport&, std::size_t done, std::size_t total) {

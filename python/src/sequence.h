@@ -8,14 +8,15 @@
 #include "arrays.h"
 #include "metricmap/datasets/scan_source.h"
 #include "metricmap/evaluation/error_statistics.h"
+#include "object_lock.h"
 
 namespace metricmap::python {
 
-/// \brief metricmap.ScanSource: the source and a lock (sources are not thread-safe; calls that
-/// release the GIL take it).
+/// \brief metricmap.ScanSource: the source and the lock that serialises its reads (sources are
+/// not thread-safe; every call that reads scans takes it, see object_lock.h).
 struct PySource {
   std::unique_ptr<ScanSource> source;
-  std::mutex mutex;
+  mutable ObjectMutex mutex;
 };
 
 /// \brief `obj` as a ScanSource: the object itself, or a path opened with the defaults (kept

@@ -432,8 +432,8 @@ lower-left corner, m), mode.
           c.loop_every_n_nodes = c.wide_every_n_nodes = static_cast<std::size_t>(-1);
         auto p = std::make_unique<PySlam>();
         {
+          ObjectGuard guard(s.mutex, "ScanSource");
           py::gil_scoped_release release;
-          std::lock_guard<std::mutex> lock(s.mutex);
           Slam2DRun run = runSlam2D(
               *s.source, f, c, info.path,
               [&watch](std::size_t done, std::size_t total, const Slam2D&) { watch(done, total); });

@@ -114,3 +114,27 @@ def test_a_call_from_within_its_own_call_is_refused(data):
 
     with pytest.raises(RuntimeError, match="SequenceMapper is busy in this thread"):
         mapper.build(poses, frames=range(5), progress=progress)
+
+
+def test_reading_the_source_from_a_progress_callback_is_refused(data):
+    src = mm.open_scan_source(data.joinpath(*INTEL))
+
+    def progress(done, total):
+        src[0]
+
+    with pytest.raises(RuntimeError, match="ScanSource is busy in this thread"):
+        mm.run_slam2d(src, frames=range(5), progress=progress)
+    assert src[0].index == 0  # the source is free again
+
+
+def test_a_source_shared_by_four_threads(data):
+    src = mm.open_scan_source(data.joinpath(*INTEL))
+    got = {}
+
+    def work(t):
+        got[t] = [src[k].laser[1].copy() for k in range(t, 40, THREADS)]
+
+    run_threads(work)
+    for t in range(THREADS):
+        for k, ranges in zip(range(t, 40, THREADS), got[t]):
+            np.testing.assert_array_equal(ranges, src[k].laser[1])
