@@ -28,35 +28,39 @@ void emitLocalizeReport(const std::string& input, const std::string& map,
   const double rtf = total > 0 ? span / total : 0.0;
   if (format == "json") {
     nlohmann::json status = nlohmann::json::array(), score = nlohmann::json::array(),
-                   margin = nlohmann::json::array();
+                   margin = nlohmann::json::array(), crossing = nlohmann::json::array();
     for (const Localization2D& r : run.results) {
       status.push_back(statusName(r.status));
       score.push_back(std::round(r.score * 1e4) / 1e4);
       margin.push_back(std::round(r.margin * 1e4) / 1e4);
+      crossing.push_back(std::round(r.crossing * 1e4) / 1e4);
     }
-    const nlohmann::json j = {
-        {"input", input},
-        {"map", map},
-        {"scans", s.scans},
-        {"localised", s.localised},
-        {"first_fix", first},
-        {"global_searches", s.global_searches},
-        {"ambiguous", s.ambiguous},
-        {"losses", s.losses},
-        {"recoveries", recoveries},
-        {"candidates", s.candidates},
-        {"seconds",
-         {{"map", times.map},
-          {"setup", s.setup_seconds},
-          {"read", run.read_seconds},
-          {"global", s.global_seconds},
-          {"track", s.track_seconds},
-          {"write", times.write},
-          {"total", total}}},
-        {"log_seconds", span},
-        {"real_time_factor", rtf},
-        {"per_scan",
-         {{"frame", frames}, {"status", status}, {"score", score}, {"margin", margin}}}};
+    const nlohmann::json j = {{"input", input},
+                              {"map", map},
+                              {"scans", s.scans},
+                              {"localised", s.localised},
+                              {"first_fix", first},
+                              {"global_searches", s.global_searches},
+                              {"ambiguous", s.ambiguous},
+                              {"losses", s.losses},
+                              {"recoveries", recoveries},
+                              {"candidates", s.candidates},
+                              {"seconds",
+                               {{"map", times.map},
+                                {"setup", s.setup_seconds},
+                                {"read", run.read_seconds},
+                                {"global", s.global_seconds},
+                                {"track", s.track_seconds},
+                                {"write", times.write},
+                                {"total", total}}},
+                              {"log_seconds", span},
+                              {"real_time_factor", rtf},
+                              {"per_scan",
+                               {{"frame", frames},
+                                {"status", status},
+                                {"score", score},
+                                {"margin", margin},
+                                {"crossing", crossing}}}};
     return emit(j.dump(2) + "\n", outputs);
   }
   char text[1024];

@@ -57,6 +57,18 @@ struct Localizer2D::Impl {
   std::optional<Pose2D> last_odometry;
   Pose2D last_motion;
   std::size_t weak_run = 0, unlocalised_run = 0;
+  std::optional<Pose2D> searched_odometry;  ///< the odometry at the last global search
+
+  /// While not localised: search this scan? The first one, then once the odometry has moved
+  /// far enough since the last search (the same view gives the same answer), or every
+  /// global_every_n_scans scans.
+  bool searchDue(const std::optional<Pose2D>& odometry) const {
+    if (initial || unlocalised_run % config.global_every_n_scans == 0) return true;
+    if (!odometry || !searched_odometry) return false;
+    const Pose2D moved = compose(inverse(*searched_odometry), *odometry);
+    return std::hypot(moved.x, moved.y) >= config.global_min_motion ||
+           std::fabs(moved.theta) >= config.global_min_turn_deg * kDeg;
+  }
   LocalizationStatus status = LocalizationStatus::NotFound;
   Localizer2DStats stats;
 
@@ -65,11 +77,26 @@ struct Localizer2D::Impl {
         sensor(s),
         origin(map.origin),
         to_grid(inverse(map.origin)),
-        matcher(map, c.occupied_probability, c.free_probability, c.branch_and_bound_depth) {}
+        matcher(map, c.occupied_probability, c.free_probability, c.branch_and_bound_depth,
+                c.global_coarsening) {}
 
   ScanMatch2D refine(const std::vector<Eigen::Vector2f>& points, const Pose2D& from) const {
     return refinePose(matcher.grid(), points, from, from, config.translation_weight,
                       config.rotation_weight, config.refine_iterations);
+  }
+
+  /// A pose from the search's grid on the map's: a correlative search over one coarse cell
+  /// and one coarse angular step, then Gauss-Newton; its score on every point.
+  ScanMatch2D polish(const std::vector<Eigen::Vector2f>& points,
+                     const std::vector<Eigen::Vector2f>& coarse, const Pose2D& from) const {
+    Pose2D start = from;
+    const double res = matcher.resolution(), search_res = matcher.searchResolution();
+    if (search_res > res)
+      start =
+          correlativeSearch(matcher.grid(), points, from, search_res,
+                            angularSearchStep(search_res, coarse), angularSearchStep(res, points))
+              .pose;
+    return refine(points, start);
   }
 
   /// The branch-and-bound in a window; the best pose and its search score.
@@ -102,23 +129,36 @@ struct Localizer2D::Impl {
     const std::optional<ScanMatch2D> best =
         coarse.empty() ? std::nullopt : search(coarse, centre, linear, angular, floor, nullptr);
     if (best) {
-      const ScanMatch2D refined = refine(points, best->pose);
-      r.pose = refined.pose;
-      r.score = refined.score;
-      if (refined.score >= c.global_min_score) {
-        r.status = LocalizationStatus::Fixed;
-        if (!around) {
-          // The best distinct pose: the same search with the best's neighbourhood excluded,
-          // down to the margin's floor (anything below it cannot make the fix ambiguous).
-          const SearchExclusion2D exclude{best->pose, c.global_distinct_distance,
-                                          c.global_distinct_angle_deg * kDeg};
-          const double runner_floor = std::max(floor, best->score - 2 * c.global_min_margin);
-          const std::optional<ScanMatch2D> second =
-              search(coarse, centre, linear, angular, runner_floor, &exclude);
-          r.margin = second ? best->score - second->score : best->score - runner_floor;
-          if (second && r.margin < c.global_min_margin) r.status = LocalizationStatus::Ambiguous;
+      ScanMatch2D refined = polish(points, coarse, best->pose);
+      std::optional<ScanMatch2D> other;
+      if (!around && refined.score >= c.global_min_score) {
+        // The best distinct pose: the same search with the best's neighbourhood excluded, down
+        // to a floor below the best (what scores less there cannot come within the margin once
+        // refined), then refined like the best. The coarse grid can rank two places the other
+        // way round: the better refined one is the fix, the margin is between refined scores.
+        const SearchExclusion2D exclude{best->pose, c.global_distinct_distance,
+                                        c.global_distinct_angle_deg * kDeg};
+        const double runner_floor = std::max(floor, best->score - 3 * c.global_min_margin);
+        if (const auto second = search(coarse, centre, linear, angular, runner_floor, &exclude)) {
+          other = polish(points, coarse, second->pose);
+          const bool distinct =
+              std::hypot(other->pose.x - refined.pose.x, other->pose.y - refined.pose.y) >
+                  c.global_distinct_distance ||
+              std::fabs(std::remainder(other->pose.theta - refined.pose.theta, 2 * kPi)) >
+                  c.global_distinct_angle_deg * kDeg;
+          if (!distinct) other.reset();
+          if (other && other->score > refined.score) std::swap(*other, refined);
         }
       }
+      r.pose = refined.pose;
+      r.score = refined.score;
+      r.margin = other ? refined.score - other->score : 3 * c.global_min_margin;
+      r.crossing = matcher.crossing(
+          coarse, Eigen::Vector2f(static_cast<float>(sensor.x), static_cast<float>(sensor.y)),
+          refined.pose, c.global_crossing_clearance);
+      if (refined.score >= c.global_min_score && r.crossing <= c.global_max_crossing)
+        r.status = around || r.margin >= c.global_min_margin ? LocalizationStatus::Fixed
+                                                             : LocalizationStatus::Ambiguous;
     }
     if (r.status == LocalizationStatus::Ambiguous) stats.ambiguous++;
     stats.global_seconds += since(t0);
@@ -196,12 +236,14 @@ Localization2D Localizer2D::localize(const LaserScan& scan, const std::optional<
     if (r.status == LocalizationStatus::Lost) {
       d.tracking = false;
       d.unlocalised_run = 0;
+      d.searched_odometry.reset();
       d.stats.losses++;
     }
-  } else if (d.initial || d.unlocalised_run % c.global_every_n_scans == 0) {
+  } else if (d.searchDue(odometry)) {
     r = d.globalSearch(points, d.initial);
     d.initial.reset();
-    d.unlocalised_run++;
+    d.searched_odometry = odometry;
+    d.unlocalised_run = 1;
     if (r.status == LocalizationStatus::Fixed) {
       d.tracking = true;
       d.pose = r.pose;

@@ -47,6 +47,9 @@ struct Localization2D {
   double score = 0.0;  ///< refined nearest-cell score (0 when nothing was matched)
   /// Global search: the best's search score minus the best distinct pose's (0 when none).
   double margin = 0.0;
+  /// Global search: the share of the scan's beams that pass through a wall of the map at the
+  /// best pose (0 when not computed).
+  double crossing = 0.0;
   bool localised() const {
     return status == LocalizationStatus::Fixed || status == LocalizationStatus::Tracked;
   }

@@ -18,13 +18,22 @@ void validateLocalizer2DConfig(const Localizer2DConfig& c) {
   need(c.free_probability > 0 && c.free_probability < 0.5, "free_probability must be in (0, 0.5)");
   need(c.branch_and_bound_depth >= 1 && c.branch_and_bound_depth <= 16,
        "branch_and_bound_depth must be in 1..16");
+  need(c.global_coarsening >= 1 && c.global_coarsening <= 8, "global_coarsening must be in 1..8");
   need(c.global_search_points >= 10, "global_search_points must be >= 10");
   need(c.global_min_score > 0 && c.global_min_score < 1, "global_min_score must be in (0, 1)");
   need(c.global_min_margin >= 0 && c.global_min_margin <= 1, "global_min_margin must be in [0, 1]");
+  need(c.global_max_crossing >= 0 && c.global_max_crossing <= 1,
+       "global_max_crossing must be in [0, 1]");
+  need(std::isfinite(c.global_crossing_clearance) && c.global_crossing_clearance >= 0,
+       "global_crossing_clearance must be >= 0");
   need(std::isfinite(c.global_distinct_distance) && c.global_distinct_distance > 0,
        "global_distinct_distance must be > 0");
   need(c.global_distinct_angle_deg > 0 && c.global_distinct_angle_deg <= 180,
        "global_distinct_angle_deg must be in (0, 180]");
+  need(std::isfinite(c.global_min_motion) && c.global_min_motion >= 0,
+       "global_min_motion must be >= 0");
+  need(std::isfinite(c.global_min_turn_deg) && c.global_min_turn_deg >= 0,
+       "global_min_turn_deg must be >= 0");
   need(c.global_every_n_scans >= 1, "global_every_n_scans must be >= 1");
   need(std::isfinite(c.initial_linear_window) && c.initial_linear_window > 0 &&
            c.initial_linear_window <= 100,

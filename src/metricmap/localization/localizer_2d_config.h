@@ -21,18 +21,31 @@ struct Localizer2DConfig {
   double free_probability = 0.1192;     ///< (0, 0.5)
 
   // --- global search (no pose yet, or lost): branch-and-bound over the whole map and headings
-  int branch_and_bound_depth = 7;          ///< levels of the multi-resolution grids (1..16)
+  int branch_and_bound_depth = 6;  ///< levels of the multi-resolution grids (1..16)
+  /// The search runs on the map coarsened this many times (cells of 2 x 2 map cells: four
+  /// times fewer positions, half the headings), exactly there; a correlative search over one
+  /// coarse cell on the map itself follows (1..8; 1: the map itself).
+  int global_coarsening = 2;
   std::size_t global_search_points = 200;  ///< points the search scores, at most (>= 10)
   /// The best pose is accepted when its refined score reaches this ...
-  double global_min_score = 0.55;  ///< (0, 1)
+  double global_min_score = 0.6;  ///< (0, 1)
   /// ... and its search score exceeds that of the best distinct pose by this much ([0, 1]).
   double global_min_margin = 0.05;
+  /// ... and at most this share of its beams pass through an occupied cell of the map more than
+  /// global_crossing_clearance before their end (a scan placed where it would see through
+  /// walls is in another place, or another building) ([0, 1]).
+  double global_max_crossing = 0.25;
+  double global_crossing_clearance = 0.3;  ///< m (>= 0)
   /// Poses farther apart than this, or turned more than global_distinct_angle_deg, are
   /// distinct (a symmetric building's twin places).
   double global_distinct_distance = 1.0;    ///< m (> 0)
   double global_distinct_angle_deg = 20.0;  ///< deg (> 0)
-  /// While not localised, one scan in this many is searched (the others wait) (>= 1).
-  std::size_t global_every_n_scans = 1;
+  /// While not localised, a scan is searched once the odometry has moved this far or turned
+  /// this much since the last search (the same view gives the same answer) ...
+  double global_min_motion = 0.2;     ///< m (>= 0)
+  double global_min_turn_deg = 10.0;  ///< deg (>= 0)
+  /// ... or this many scans after it (without odometry: the only rule) (>= 1).
+  std::size_t global_every_n_scans = 20;
 
   // --- an initial pose given by the user: searched in this window around it
   double initial_linear_window = 1.0;        ///< m (> 0)
