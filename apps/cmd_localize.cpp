@@ -196,7 +196,11 @@ void addLocalizeCommand(CLI::App& app) {
     RolePaths inputs = sourceInputs(o->source);
     inputs.push_back({"--map", o->map});
     requireDistinctFiles(inputs, {{"--out-poses", o->out_poses}, {"--out-png", o->out_png}});
-    requireExtension("--map", o->map, {".yaml", ".yml"}, "a map_server YAML");
+    const auto dot = o->map.find_last_of('.');
+    const std::string ext = dot == std::string::npos ? "" : o->map.substr(dot);
+    if (ext != ".yaml" && ext != ".yml")
+      throw UsageError("--map '" + quoteForMessage(o->map) +
+                       "': give the map_server YAML (.yaml or .yml), not its image");
     requireExtension("--out-poses", o->out_poses, {".tum", ".txt"}, "a pose file");
     requireExtension("--out-png", o->out_png, {".png"}, "a PNG picture");
     run(*o);

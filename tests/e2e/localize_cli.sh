@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# metricmap localize: a map made by slam2d of the Intel log's first scans, the same log localised
+# in it without an initial pose: a fix within 20 scans, poses at slam2d's (an independent
+# estimate of the same scans); hostile map files and bad options refused, nothing written.
+MM=$1
+DATA=$2
+source "$(dirname "$0")/lib.sh"
+log=$DATA/radish_clf_raw/intel.clf.bz2
+if [ ! -f "$log" ]; then echo "skip: $log missing"; exit 77; fi
+"$MM" slam2d "$log" --frames 0-599 --out-map "$tmp/m.pgm" --out-poses "$tmp/slam.tum" >/dev/null
+"$MM" localize "$log" --map "$tmp/m.yaml" --frames 300-499 --out-poses "$tmp/p.tum" \
+  --out-png "$tmp/p.png" --format json >"$tmp/r.json"
+check "poses and picture written" test -s "$tmp/p.tum" -a -s "$tmp/p.png"
+check "fixed within 20 scans, 95 % localised, at slam2d's poses" /usr/bin/python3 - "$tmp" <<'PY'
+import json, math, sys
+d = sys.argv[1]
+r = json.load(open(f'{d}/r.json'))
+assert r['first_fix'] is not None and r['first_fix']['scan'] < 20, r['first_fix']
+assert r['localised'] >= 0.95 * (r['scans'] - r['first_fix']['scan']), r['localised']
+assert len(r['per_scan']['status']) == r['scans'] == 200
+slam = {l.split()[0]: [float(x) for x in l.split()[1:3]] for l in open(f'{d}/slam.tum')}
+rows = [l.split() for l in open(f'{d}/p.tum')]
+assert len(rows) == r['localised'], (len(rows), r['localised'])
+err = sorted(math.dist([float(x) for x in row[1:3]], slam[row[0]]) for row in rows)
+print('median error', err[len(err) // 2], 'max', err[-1])
+assert err[len(err) // 2] <= 0.05 and err[int(len(err) * 0.95)] <= 0.15
+PY
+"$MM" localize "$log" --map "$tmp/m.yaml" --frames 300-349 --out-poses "$tmp/k.txt" \
+  --pose-format kitti >/dev/null
+check "kitti rows: 12 numbers" /usr/bin/python3 -c "
+import sys; rows = [l.split() for l in open('$tmp/k.txt')]
+assert rows and all(len(r) == 12 for r in rows)"
+
+# Hostile map files: one line naming the file, exit 1, no pose file.
+y() {  # y NAME IMAGE: a map_server YAML naming IMAGE
+  printf 'image: %s\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n' "$2" >"$tmp/$1.yaml"
+}
+y missing nowhere.pgm
+printf 'P5 100000 100000 255 \000\000' >"$tmp/huge.pgm"; y huge huge.pgm
+printf 'not an image' >"$tmp/odd.pgm"; y odd odd.pgm
+printf 'P5 2 2 65535 \000\000\000\000\000\000\000\000' >"$tmp/deep.pgm"; y deep deep.pgm
+printf 'image: [m.pgm\n' >"$tmp/broken.yaml"
+printf 'image: m.pgm\nresolution: -1\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n' >"$tmp/neg.yaml"
+for case in "missing|nowhere.pgm" "huge|100000 x 100000" "odd|not a PGM" "deep|16-bit" \
+            "broken|broken.yaml" "neg|resolution"; do
+  IFS='|' read -r name needle <<<"$case"
+  expect 1 "$needle" -- "$MM" localize "$log" --map "$tmp/$name.yaml" --out-poses "$tmp/x.tum"
+  check "$name: nothing written" test ! -e "$tmp/x.tum"
+done
+expect_cases \
+  "2|--initial-pose|localize $log --map $tmp/m.yaml --initial-pose 1,2" \
+  "2|--map|localize $log --map $tmp/m.pgm" \
+  "2|--pose-format|localize $log --map $tmp/m.yaml --pose-format kitti" \
+  "2|global_min_score|localize $log --map $tmp/m.yaml --set global_min_score=2" \
+  "2|unknown localisation parameter|localize $log --map $tmp/m.yaml --set nope=1"
+finish
