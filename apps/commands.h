@@ -21,5 +21,6 @@ void addOccupancyCommand(CLI::App& app);
 void addEvaluateCommand(CLI::App& app);
 void addPoseGraphCommand(CLI::App& app);
 void addSlam2DCommand(CLI::App& app);
+void addDistanceCommand(CLI::App& app);
 
 }  // namespace metricmap::cli
