@@ -22,5 +22,6 @@ void addEvaluateCommand(CLI::App& app);
 void addPoseGraphCommand(CLI::App& app);
 void addSlam2DCommand(CLI::App& app);
 void addLocalizeCommand(CLI::App& app);
+void addDistanceCommand(CLI::App& app);
 
 }  // namespace metricmap::cli

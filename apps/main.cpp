@@ -86,6 +86,7 @@ int main(int argc, char** argv) {
   metricmap::cli::addPoseGraphCommand(app);
   metricmap::cli::addSlam2DCommand(app);
   metricmap::cli::addLocalizeCommand(app);
+  metricmap::cli::addDistanceCommand(app);
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
     std::string names;  // from the registered commands, in registration order

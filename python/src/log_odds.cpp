@@ -13,6 +13,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "arrays.h"
+#include "log_odds_object.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/occupancy/log_odds_map.h"
 #include "metricmap/occupancy/occupancy_export.h"
@@ -22,23 +23,6 @@
 namespace metricmap::python {
 
 namespace {
-
-/// The Python object: the map, replaced by a copy with another max_range when a call asks for
-/// one (the library keeps max_range in the map's parameters).
-struct PyLogOddsMap {
-  std::unique_ptr<LogOddsMap> map;
-  mutable ObjectMutex mutex;  ///< serialises the object's calls
-
-  void useMaxRange(double max_range) {
-    if (!(max_range > 0.0)) max_range = std::numeric_limits<double>::infinity();  // OctoMap: -1
-    if (map->params().max_range == max_range) return;
-    LogOddsParams p = map->params();
-    p.max_range = max_range;
-    auto copy = std::make_unique<LogOddsMap>(p);
-    copy->merge(*map);  // a fresh map takes every voxel's log-odds as it is
-    map = std::move(copy);
-  }
-};
 
 CArray<double> queryPoints(const py::handle& obj) {
   auto a = doublesFromArray(pointsOf(obj), "points");

@@ -6,6 +6,7 @@
 namespace metricmap::python {
 void initBinPoints(py::module_& m);
 void initCamera(py::module_& m);
+void initDistance(py::module_& m);
 void initCloudIo(py::module_& m);
 void initGrid(py::module_& m);
 void initHeightMap(py::module_& m);
@@ -32,6 +33,7 @@ PYBIND11_MODULE(_metricmap, m) {
   initCamera(m);
   initLines(m);
   initLogOdds(m);
+  initDistance(m);
   initOdometry(m);
   initSequence(m);
   initPoseGraph(m);

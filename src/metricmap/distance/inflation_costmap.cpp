@@ -28,11 +28,12 @@ double reachCells(double resolution, const InflationParams& p) {
 
 }  // namespace
 
-std::uint8_t inflationCost(double distance, double resolution, const InflationParams& p) {
-  if (distance / resolution > reachCells(resolution, p)) return kCostFree;
-  if (distance == 0.0) return kCostLethal;
+std::uint8_t inflationCost(double cells, double resolution, const InflationParams& p) {
+  if (cells > reachCells(resolution, p)) return kCostFree;
+  if (cells == 0.0) return kCostLethal;
+  const double distance = cells * resolution;
   if (distance <= p.inscribed_radius) return kCostInscribed;
-  const double factor = std::exp(-p.cost_scaling_factor * (distance - p.inscribed_radius));
+  const double factor = std::exp(-1.0 * p.cost_scaling_factor * (distance - p.inscribed_radius));
   return static_cast<std::uint8_t>((kCostInscribed - 1) * factor);
 }
 
@@ -65,10 +66,10 @@ MapServerImage inflationCostmap(const DistanceField& field, const InflationParam
   for (std::size_t i = 0; i < w; ++i) {
     for (std::size_t j = 0; j < h; ++j) {
       // the field's float distance is sqrt(d2) * res rounded once: recover d2 exactly
-      const double cells = std::round(std::pow(static_cast<double>(field.at(i, j, 0)) / res, 2.0));
-      const double distance = std::sqrt(cells) * res;
-      std::uint8_t cost =
-          field.at(i, j, 0) >= fp.max_distance ? kCostFree : inflationCost(distance, res, params);
+      const double d2 = std::round(std::pow(static_cast<double>(field.at(i, j, 0)) / res, 2.0));
+      std::uint8_t cost = field.at(i, j, 0) >= fp.max_distance
+                              ? kCostFree
+                              : inflationCost(std::sqrt(d2), res, params);
       if (field.states()[i * h + j] == kVoxelUnknown) {
         const bool take = params.inflate_unknown ? cost > kCostFree : cost >= kCostInscribed;
         if (!take) cost = kCostUnknown;

@@ -20,10 +20,11 @@ struct InflationParams {
   bool inflate_unknown = false;       ///< unknown cells take any inflated cost, not only >= 253
 };
 
-/// \brief The cost of a cell `distance` metres from the nearest lethal cell: 254 at 0, 253 up to
-/// the inscribed radius, then floor(252 exp(-cost_scaling_factor (distance - inscribed))),
-/// 0 beyond ceil(inflation_radius / resolution) cells.
-std::uint8_t inflationCost(double distance, double resolution, const InflationParams& params);
+/// \brief The cost of a cell `cells` cell edges from the nearest lethal cell (nav2's
+/// computeCost, d = cells * resolution): 254 at 0, 253 while d <= the inscribed radius, then
+/// floor(252 exp(-cost_scaling_factor (d - inscribed))), 0 beyond ceil(inflation_radius /
+/// resolution) cells.
+std::uint8_t inflationCost(double cells, double resolution, const InflationParams& params);
 
 /// \brief The costmap of a 2D unsigned field with unknown as free (obstacles = occupied cells):
 /// each known cell's inflationCost; an unknown cell stays 255 unless its cost is >= 253 (any
