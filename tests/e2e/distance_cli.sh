@@ -90,7 +90,7 @@ PY
 # Bad input: one line, exit 1 (2 for usage), nothing written.
 printf 'x,y,z\n1,2,3\nnan,1,2\n' >"$tmp/nan.csv"
 printf 'P5\n4 3\n255\n' >"$tmp/e.pgm"; head -c 12 /dev/zero | tr '\0' '\376' >>"$tmp/e.pgm"
-printf 'image: e.pgm\nresolution: 0.1\norigin: [0, 0, 0]\n' >"$tmp/e.yaml"
+printf 'image: e.pgm\nresolution: 0.1\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n' >"$tmp/e.yaml"
 expect_cases \
   "2|--max-distance|distance $tmp/m.yaml --max-distance nan --out $tmp/bad.npy" \
   "2|--max-distance|distance $tmp/m.yaml --max-distance -1 --out $tmp/bad.npy" \
