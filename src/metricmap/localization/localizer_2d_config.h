@@ -60,9 +60,9 @@ struct Localizer2DConfig {
   int refine_iterations = 10;                  ///< Gauss-Newton steps (1..1000)
   /// A tracked scan whose score falls below this is weak: its pose is kept for the next
   /// prediction but not reported ((0, 1)).
-  double track_min_score = 0.4;
+  double track_min_score = 0.55;
   /// After this many weak scans in a row the robot is lost: the global search takes over (>= 1).
-  std::size_t lost_after_weak_scans = 10;
+  std::size_t lost_after_weak_scans = 5;
 };
 
 /// \brief \throws std::invalid_argument naming the first value out of its range.
