@@ -6,10 +6,10 @@
 
 #include "cli_common.h"
 #include "commands.h"
-#include "metricmap/octree/octree_csv.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/output_set.h"
 #include "metricmap/octree/adaptive_octree.h"
+#include "metricmap/octree/octree_csv.h"
 #include "stats_json.h"
 #include "table.h"
 

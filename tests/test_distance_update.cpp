@@ -102,7 +102,7 @@ TEST(InflationCostmap, MatchesNav2sFormulaOnAHandMadeMap) {
     for (int j = 0; j < 8; ++j) set(i, j, kMapUnknown);
   }
   set(11, 24, kMapUnknown);  // unknown next to the wall: takes its cost, 253
-  MapServerYaml yaml;  // map_server's defaults, trinary
+  MapServerYaml yaml;        // map_server's defaults, trinary
   yaml.resolution = im.resolution;
   yaml.origin_x = im.origin_x;
   yaml.origin_y = im.origin_y;

@@ -12,9 +12,9 @@
 #include <gtest/gtest.h>
 
 #include "metricmap/datasets/kitti_sequence.h"
-#include "metricmap/io/trajectory.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
+#include "metricmap/io/trajectory.h"
 #include "metricmap/mapping/occupancy_map_2d.h"
 #include "metricmap/registration/scan_registration.h"
 #include "scratch_files.h"

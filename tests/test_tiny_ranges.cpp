@@ -13,8 +13,8 @@
 #include <gtest/gtest.h>
 
 #include "metricmap/mapping/log_odds_grid_2d.h"
-#include "metricmap/sequence/scan_mapper.h"
 #include "metricmap/occupancy/log_odds_map.h"
+#include "metricmap/sequence/scan_mapper.h"
 #include "metricmap/slam/slam_2d_config.h"
 
 namespace metricmap {

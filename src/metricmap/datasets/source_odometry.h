@@ -4,8 +4,8 @@
 /// odom_theta) as a trajectory with the scans' stamps: what the SLAM benchmark's relation metric
 /// interpolates with.
 
-#include "metricmap/datasets/scan_source.h"
 #include "metricmap/common/trajectory.h"
+#include "metricmap/datasets/scan_source.h"
 
 namespace metricmap {
 

@@ -82,7 +82,8 @@ OccupancyBox occupancyBoxOf(const LogOddsMap& map, const DistanceFieldParams& pa
 
 OccupancyBox occupancyBoxOf(const Map2D& map, const DistanceFieldParams& params) {
   if (map.width <= 0 || map.height <= 0 ||
-      map.cells.size() != static_cast<std::size_t>(map.width) * static_cast<std::size_t>(map.height))
+      map.cells.size() !=
+          static_cast<std::size_t>(map.width) * static_cast<std::size_t>(map.height))
     throw std::invalid_argument("distance field: empty map");
   if (map.origin.theta != 0.0)
     throw std::invalid_argument(

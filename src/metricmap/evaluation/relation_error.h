@@ -10,9 +10,9 @@
 #include <optional>
 #include <vector>
 
-#include "metricmap/evaluation/error_statistics.h"
 #include "metricmap/common/pose_relation.h"
 #include "metricmap/common/trajectory.h"
+#include "metricmap/evaluation/error_statistics.h"
 
 namespace metricmap {
 

@@ -3,12 +3,12 @@
 /// \brief Everything `metricmap evaluate` reports for an estimate against a reference: the
 /// pairing, the alignment, ATE, per-frame RPE and KITTI drift, computed in one call.
 
+#include "metricmap/common/trajectory.h"
 #include "metricmap/evaluation/absolute_error.h"
 #include "metricmap/evaluation/alignment.h"
 #include "metricmap/evaluation/kitti_drift.h"
 #include "metricmap/evaluation/pose_pairing.h"
 #include "metricmap/evaluation/relative_error.h"
-#include "metricmap/common/trajectory.h"
 
 namespace metricmap {
 

@@ -28,9 +28,10 @@ struct LaserScan {
   std::size_t validBeams() const;
 };
 
-/// \brief The rules a scan handed to an algorithm obeys: as many angles as ranges, every angle finite and within [-2 pi, 2 pi] rad. A range in the angles' place (a
-/// (ranges, angles) call where (angles, ranges) is meant) usually breaks the last rule.
-/// \throws std::invalid_argument naming the first beam that breaks a rule
+/// \brief The rules a scan handed to an algorithm obeys: as many angles as ranges, every angle
+/// finite and within [-2 pi, 2 pi] rad. A range in the angles' place (a (ranges, angles) call where
+/// (angles, ranges) is meant) usually breaks the last rule. \throws std::invalid_argument naming
+/// the first beam that breaks a rule
 void validateLaserScan(const LaserScan& scan);
 
 /// \brief Scans read from a file, plus what was skipped.

@@ -13,9 +13,9 @@
 
 #include <Eigen/Geometry>
 
+#include "metricmap/common/trajectory.h"
 #include "metricmap/datasets/scan_source.h"
 #include "metricmap/evaluation/relative_error.h"
-#include "metricmap/common/trajectory.h"
 #include "metricmap/registration/lidar_odometry.h"
 #include "metricmap/sequence/sensor_profile.h"
 

@@ -14,8 +14,8 @@
 #include <Eigen/Geometry>
 
 #include "metricmap/datasets/scan_source.h"
-#include "metricmap/sequence/scan_mapper.h"
 #include "metricmap/sequence/odometry_run.h"
+#include "metricmap/sequence/scan_mapper.h"
 
 namespace metricmap {
 

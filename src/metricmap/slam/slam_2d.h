@@ -73,8 +73,8 @@ class Slam2D {
   /// \brief Add the next scan with the robot's raw odometry (base -> odometry world), when known,
   /// and its stamp (s; NaN when unknown: the motion filter's time limit then never applies).
   /// Beams with a NaN range are skipped. \throws std::invalid_argument for a scan without beams
-  /// or one that breaks validateLaserScan's rules, an infinite stamp, or non-finite odometry; \throws
-  /// CapacityError when the maps outgrow the memory budget
+  /// or one that breaks validateLaserScan's rules, an infinite stamp, or non-finite odometry;
+  /// \throws CapacityError when the maps outgrow the memory budget
   void addScan(const LaserScan& scan, const std::optional<Pose2D>& odometry,
                double stamp = std::numeric_limits<double>::quiet_NaN());
 
