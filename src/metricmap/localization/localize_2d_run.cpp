@@ -1,10 +1,9 @@
 #include "metricmap/localization/localize_2d_run.h"
 
-#include <chrono>
 #include <stdexcept>
 
 #include "metricmap/common/pose_2d_spatial.h"
-#include "metricmap/datasets/scan_source.h"
+#include "metricmap/datasets/planar_scan.h"
 #include "metricmap/exceptions.h"
 
 namespace metricmap {
@@ -20,13 +19,9 @@ Localize2DRun runLocalize2D(ScanSource& source, const std::vector<std::size_t>& 
   if (initial) localizer.setInitialPose(*initial);
   run.results.reserve(frames.size());
   for (std::size_t k = 0; k < frames.size(); ++k) {
-    const auto t0 = std::chrono::steady_clock::now();
-    Scan scan = source.scan(frames[k]);
-    run.read_seconds +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (!scan.laser) throw InputError(scan.name + ": not a 2D laser scan");
-    std::optional<Pose2D> odometry;
-    if (scan.odometry) odometry = planarPose(*scan.odometry);
+    const PlanarScan p = readPlanarScan(source, frames[k], run.read_seconds);
+    const Scan& scan = p.scan;
+    const std::optional<Pose2D>& odometry = p.odometry;
     try {
       run.results.push_back(localizer.localize(*scan.laser, odometry));
     } catch (const std::invalid_argument& e) {

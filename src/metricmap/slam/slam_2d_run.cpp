@@ -1,13 +1,12 @@
 #include "metricmap/slam/slam_2d_run.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
 
 #include "metricmap/common/pose_2d_spatial.h"
-#include "metricmap/datasets/scan_source.h"
+#include "metricmap/datasets/planar_scan.h"
 #include "metricmap/exceptions.h"
 
 namespace metricmap {
@@ -20,13 +19,9 @@ Slam2DRun runSlam2D(ScanSource& source, const std::vector<std::size_t>& frames,
   Slam2D& slam = *run.slam;
   Trajectory& trajectory = run.trajectory;
   for (std::size_t k = 0; k < frames.size(); ++k) {
-    const auto t0 = std::chrono::steady_clock::now();
-    Scan scan = source.scan(frames[k]);
-    run.read_seconds +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (!scan.laser) throw InputError(scan.name + ": not a 2D laser scan");
-    std::optional<Pose2D> odometry;
-    if (scan.odometry) odometry = planarPose(*scan.odometry);
+    const PlanarScan p = readPlanarScan(source, frames[k], run.read_seconds);
+    const Scan& scan = p.scan;
+    const std::optional<Pose2D>& odometry = p.odometry;
     try {
       slam.addScan(*scan.laser, odometry, scan.stamp);
     } catch (const CapacityError& e) {  // the maps outgrew the budget: name the scan
