@@ -13,6 +13,7 @@
 #include "distance_query_csv.h"
 #include "metricmap/distance/distance_sources.h"
 #include "metricmap/distance/inflation_costmap.h"
+#include "metricmap/exceptions.h"
 #include "metricmap/io/array_writers.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/map_server.h"
@@ -106,7 +107,11 @@ void runDistance(const CLI::App& app, const DistanceOptions& o) {
     box = occupancyBoxOf(*map2d, params);
   } else {
     const LoadedCloud loaded = loadTimed(o.map);
-    box = occupancyBoxOf(*loaded.cloud, o.resolution, params);
+    try {
+      box = occupancyBoxOf(*loaded.cloud, o.resolution, params);
+    } catch (const CapacityError& e) {
+      throw CapacityError(o.map + ": " + e.what());
+    }
   }
   const double load_seconds = secondsSince(start);
   const DistanceField field(std::move(box), params);

@@ -31,6 +31,7 @@ namespace {
 
 struct LocalizeOptions {
   SourceOptions source;
+  bool initial_pose_given = false;
   std::string map, initial_pose, out_poses, pose_format = "tum", out_png, format = "table";
   Localizer2DConfig config;
   std::vector<std::string> set;
@@ -89,7 +90,7 @@ void writeOutputs(const LocalizeOptions& o, const Map2D& map, const Localize2DRu
 void run(const LocalizeOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   std::optional<Pose2D> initial;
-  if (!o.initial_pose.empty()) {
+  if (o.initial_pose_given) {
     std::vector<double> v;
     try {
       v = parseDoubleList(o.initial_pose, "--initial-pose");
@@ -103,6 +104,13 @@ void run(const LocalizeOptions& o) {
   }
   const Map2D map = loadMapServer(o.map);
   const double map_seconds = secondsSince(start);
+  if (initial) {
+    try {
+      validateInitialPose(map, *initial);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--initial-pose: ") + e.what());
+    }
+  }
   std::unique_ptr<ScanSource> source = openSource(o.source);
   const SourceInfo& info = source->info();
   if (!info.planar)
@@ -153,9 +161,14 @@ void addLocalizeCommand(CLI::App& app) {
       "localize", "Find and track a robot in a saved map (2D: a CARMEN log in a map_server map)");
   addSourceOptions(*sub, o->source);
   sub->add_option("--map", o->map, "The map: a map_server YAML (and the PGM it names)")->required();
-  sub->add_option("--initial-pose", o->initial_pose,
-                  "x,y,yaw in the map's frame (m, m, rad): searched around it instead of the "
-                  "whole map");
+  sub->add_option_function<std::string>(
+      "--initial-pose",
+      [o](const std::string& v) {
+        o->initial_pose = v;
+        o->initial_pose_given = true;
+      },
+      "x,y,yaw in the map's frame (m, m, rad): searched around it instead of the "
+      "whole map");
   sub->add_option("--out-poses", o->out_poses,
                   "Poses of the localised scans in the map's frame, with the scans' stamps")
       ->check(kOutputFile);

@@ -42,6 +42,7 @@ std::vector<double> readQueryPoints(const std::string& path) {
   std::vector<double> xyz;
   std::string line;
   std::size_t number_of_line = 0;
+  bool first_row = true;  // only the first non-comment line may be a header
   while (std::getline(in, line)) {
     ++number_of_line;
     const std::vector<std::string> f = fieldsOf(line);
@@ -49,7 +50,10 @@ std::vector<double> readQueryPoints(const std::string& path) {
     const std::string where = path + ":" + std::to_string(number_of_line);
     const bool numeric_start = std::isdigit(static_cast<unsigned char>(f[0][0])) ||
                                f[0][0] == '-' || f[0][0] == '+' || f[0][0] == '.';
-    if (xyz.empty() && !numeric_start && f[0] != "nan" && f[0] != "NaN") continue;  // a header
+    const bool header = first_row && !numeric_start && f[0] != "nan" && f[0] != "NaN" &&
+                        f[0] != "inf" && f[0] != "Inf" && f[0] != "-inf";
+    first_row = false;
+    if (header) continue;
     if (f.size() != 2 && f.size() != 3)
       throw InputError(where + ": expected x,y or x,y,z, got " + std::to_string(f.size()) +
                        " fields");

@@ -221,6 +221,25 @@ TEST_F(Localizer2DTest, AnInitialPoseIsSearchedAroundAndRefined) {
   EXPECT_EQ(l.stats().global_searches, 1u);
 }
 
+TEST(Localizer2DInitialPose, OutsideTheMapOrAHugeYawIsRefusedInsideIsAccepted) {
+  Map2D map;  // 4 m x 2 m from (-1, 3)
+  map.width = 40;
+  map.height = 20;
+  map.resolution = 0.1;
+  map.origin = {-1.0, 3.0, 0.0};
+  map.cells.assign(800, kCellFree);
+  EXPECT_NO_THROW(validateInitialPose(map, {-1.0, 3.0, 0.0}));
+  EXPECT_NO_THROW(validateInitialPose(map, {3.0, 5.0, -1e6}));
+  const std::vector<Pose2D> bad = {{-1.01, 4.0, 0.0}, {3.01, 4.0, 0.0}, {0.0, 2.99, 0.0},
+                                   {0.0, 5.01, 0.0},  {1e300, 4.0, 0.0}, {0.0, 4.0, 1.000001e6},
+                                   {0.0, 4.0, NAN}};
+  for (const Pose2D& p : bad) {
+    EXPECT_THROW(validateInitialPose(map, p), std::invalid_argument) << p.x << " " << p.theta;
+    Localizer2D l(map, Localizer2DConfig{}, Pose2D{});
+    EXPECT_THROW(l.setInitialPose(p), std::invalid_argument) << p.x << " " << p.theta;
+  }
+}
+
 TEST(Localizer2DParameters, EveryNameRoundTripsAndBadValuesAreNamed) {
   Localizer2DConfig c;
   for (const std::string& name : localizer2DParameterNames()) {

@@ -89,6 +89,13 @@ PY
 
 # Bad input: one line, exit 1 (2 for usage), nothing written.
 printf 'x,y,z\n1,2,3\nnan,1,2\n' >"$tmp/nan.csv"
+printf 'x,y\ninf,0\n' >"$tmp/inf.csv"       # only the first line may be a header
+printf 'x,y\nabc,1\n' >"$tmp/word.csv"
+$py -c "
+import numpy as np
+p = np.array([[0, 0, 0], [1e30, 0, 0]], np.float32)
+h = 'VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 2\nDATA binary\n'
+open('$tmp/far.pcd', 'wb').write(h.encode() + p.tobytes())"
 printf 'P5\n4 3\n255\n' >"$tmp/e.pgm"; head -c 12 /dev/zero | tr '\0' '\376' >>"$tmp/e.pgm"
 printf 'image: e.pgm\nresolution: 0.1\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n' >"$tmp/e.yaml"
 expect_cases \
@@ -96,6 +103,10 @@ expect_cases \
   "2|--max-distance|distance $tmp/m.yaml --max-distance -1 --out $tmp/bad.npy" \
   "1|nan.csv:3|distance $tmp/m.yaml --query $tmp/nan.csv --out-query $tmp/bad.csv --out $tmp/bad.npy" \
   "2|--resolution|distance $tmp/m.yaml --resolution 0.1" \
+  "1|inf.csv:2|distance $tmp/m.yaml --query $tmp/inf.csv --out-query $tmp/bad.csv --out $tmp/bad.npy" \
+  "1|word.csv:2|distance $tmp/m.yaml --query $tmp/word.csv --out-query $tmp/bad.csv --out $tmp/bad.npy" \
+  "1|smallest float32|distance $tmp/m.yaml --max-distance 1e-300 --out $tmp/bad.npy" \
+  "1|far.pcd: point (1e+30, 0, 0)|distance $tmp/far.pcd --resolution 0.1 --out $tmp/bad.npy" \
   "2|--out-costmap|distance $DATA/octomap_geb079/geb079.bt --out-costmap $tmp/bad.pgm" \
   "1|budget|--max-memory 1M distance $DATA/octomap_geb079/geb079.bt --out $tmp/bad.npy"
 check "nothing written by the refused runs" test ! -e "$tmp/bad.npy" -a ! -e "$tmp/bad.csv" -a ! -e "$tmp/bad.pgm"

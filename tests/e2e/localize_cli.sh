@@ -49,6 +49,10 @@ for case in "missing|nowhere.pgm" "huge|100000 x 100000" "odd|not a PGM" "deep|1
 done
 expect_cases \
   "2|--initial-pose|localize $log --map $tmp/m.yaml --initial-pose 1,2" \
+  "2|--initial-pose|localize $log --map $tmp/m.yaml --initial-pose=" \
+  "2|outside the map|localize $log --map $tmp/m.yaml --initial-pose 1e300,0,0" \
+  "2|outside the map|localize $log --map $tmp/m.yaml --initial-pose 1000,-1000,0" \
+  "2|yaw 1e+30 rad|localize $log --map $tmp/m.yaml --initial-pose 0,0,1e30" \
   "2|--map|localize $log --map $tmp/m.pgm" \
   "2|--pose-format|localize $log --map $tmp/m.yaml --pose-format kitti" \
   "2|global_min_score|localize $log --map $tmp/m.yaml --set global_min_score=2" \

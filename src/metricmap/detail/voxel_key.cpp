@@ -1,15 +1,16 @@
 #include "metricmap/detail/voxel_key.h"
 
-#include <string>
+#include <sstream>
 
 #include "metricmap/exceptions.h"
 
 namespace metricmap {
 
 void throwVoxelRange(const Eigen::Vector3d& p) {
-  throw CapacityError("voxel index of point (" + std::to_string(p.x()) + ", " +
-                      std::to_string(p.y()) + ", " + std::to_string(p.z()) +
-                      ") outside +-2^20 cells");
+  std::ostringstream msg;
+  msg << "point (" << p.x() << ", " << p.y() << ", " << p.z()
+      << ") is outside the voxel key space (+-2^20 cells from the origin)";
+  throw CapacityError(msg.str());
 }
 
 }  // namespace metricmap

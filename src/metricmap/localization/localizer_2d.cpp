@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
+#include "metricmap/common/rigid_transform.h"
 #include "metricmap/localization/map_matcher_2d.h"
 #include "metricmap/localization/scan_points_2d.h"
 #include "metricmap/posegraph/pose_graph.h"
@@ -47,9 +49,38 @@ const char* statusName(LocalizationStatus status) {
   return "unknown";
 }
 
+namespace {
+
+/// The initial pose's yaw within ±kMaxAngle and its position inside the map (a grid of
+/// extent_x × extent_y m whose lower-left corner is at `origin`).
+void checkInitialPose(const Pose2D& origin, double extent_x, double extent_y, const Pose2D& pose) {
+  if (!finite(pose)) throw std::invalid_argument("the initial pose is not finite");
+  if (std::fabs(pose.theta) > kMaxAngle) {
+    std::ostringstream msg;
+    msg << "the initial pose's yaw " << pose.theta << " rad is beyond +-" << kMaxAngle << " rad";
+    throw std::invalid_argument(msg.str());
+  }
+  const Pose2D in_grid = compose(inverse(origin), pose);
+  if (!(in_grid.x >= 0.0 && in_grid.y >= 0.0 && in_grid.x <= extent_x && in_grid.y <= extent_y)) {
+    std::ostringstream msg;
+    msg << "the initial pose (" << pose.x << ", " << pose.y << ") is outside the map";
+    if (origin.theta == 0.0)
+      msg << " (x " << origin.x << " to " << origin.x + extent_x << ", y " << origin.y << " to "
+          << origin.y + extent_y << " m)";
+    throw std::invalid_argument(msg.str());
+  }
+}
+
+}  // namespace
+
+void validateInitialPose(const Map2D& map, const Pose2D& pose) {
+  checkInitialPose(map.origin, map.width * map.resolution, map.height * map.resolution, pose);
+}
+
 struct Localizer2D::Impl {
   Localizer2DConfig config;
-  Pose2D sensor, origin, to_grid;  ///< to_grid: grid <- world
+  Pose2D sensor, origin, to_grid;         ///< to_grid: grid <- world
+  double extent_x = 0.0, extent_y = 0.0;  ///< the map's size (m), grid frame
   MapMatcher2D matcher;
   bool tracking = false;
   Pose2D pose;                    ///< last pose, grid frame
@@ -77,6 +108,8 @@ struct Localizer2D::Impl {
         sensor(s),
         origin(map.origin),
         to_grid(inverse(map.origin)),
+        extent_x(map.width * map.resolution),
+        extent_y(map.height * map.resolution),
         matcher(map, c.occupied_probability, c.free_probability, c.branch_and_bound_depth,
                 c.global_coarsening) {}
 
@@ -207,9 +240,10 @@ Localizer2D::Localizer2D(const Map2D& map, const Localizer2DConfig& config,
 Localizer2D::~Localizer2D() = default;
 
 void Localizer2D::setInitialPose(const Pose2D& pose) {
-  if (!finite(pose)) throw std::invalid_argument("the initial pose is not finite");
   Impl& d = *impl_;
-  d.initial = compose(d.to_grid, pose);
+  checkInitialPose(d.origin, d.extent_x, d.extent_y, pose);
+  const Pose2D in_grid = compose(d.to_grid, pose);
+  d.initial = in_grid;
   d.tracking = false;
   d.unlocalised_run = 0;
 }

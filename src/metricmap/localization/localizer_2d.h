@@ -65,6 +65,10 @@ struct Localizer2DStats {
   double global_seconds = 0.0, track_seconds = 0.0;
 };
 
+/// \brief Check a user's initial pose against a map: finite, a yaw within ±kMaxAngle rad, the
+/// position inside the map's extent. \throws std::invalid_argument saying which
+void validateInitialPose(const Map2D& map, const Pose2D& pose);
+
 /// \brief The localiser. Not thread-safe; the map is copied into its matching grids.
 class Localizer2D {
  public:
@@ -76,7 +80,8 @@ class Localizer2D {
   Localizer2D& operator=(const Localizer2D&) = delete;
 
   /// \brief Start from a pose the user knows (map frame): the next scan is searched in the
-  /// initial window around it instead of the whole map. \throws std::invalid_argument if not finite
+  /// initial window around it instead of the whole map. \throws std::invalid_argument if not
+  /// finite, a yaw beyond ±kMaxAngle, or a position outside the map
   void setInitialPose(const Pose2D& pose);
 
   /// \brief Localise the next scan, with the robot's raw odometry when known. Beams with a NaN
