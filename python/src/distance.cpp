@@ -20,11 +20,15 @@ namespace metricmap::python {
 namespace {
 
 /// (N, 3) float64 query points; (N, 2) and (2,)/(3,) accepted (z = 0 for 2D).
-std::vector<double> queryXyz(const py::handle& obj) {
+/// Query points as x, y, z rows: (N, 3), or (N, 2) for a 2D field (z = 0); a single point may
+/// be given as a 1-D array.
+std::vector<double> queryXyz(const py::handle& obj, const DistanceField& field) {
   auto a = doublesFromArray(obj, "points");
   if (a.ndim() == 1) a = a.reshape({py::ssize_t(1), a.shape(0)});
-  if (a.ndim() != 2 || (a.shape(1) != 3 && a.shape(1) != 2))
-    throw py::value_error("points must have shape (N, 3) or (N, 2)");
+  const bool planar = field.dimensions() == 2;
+  if (a.ndim() != 2 || (a.shape(1) != 3 && !(planar && a.shape(1) == 2)))
+    throw py::value_error(planar ? "points must have shape (N, 3) or (N, 2)"
+                                 : "points must have shape (N, 3) for a 3D field");
   const auto n = static_cast<std::size_t>(a.shape(0)), cols = static_cast<std::size_t>(a.shape(1));
   std::vector<double> xyz(3 * n, 0.0);
   const double* d = a.data();
@@ -141,7 +145,7 @@ only what a change reaches.
       .def(
           "query",
           [](const DistanceField& f, ArrayLike points) {
-            const std::vector<double> xyz = queryXyz(points);
+            const std::vector<double> xyz = queryXyz(points, f);
             const std::size_t n = xyz.size() / 3;
             py::array_t<double> d(static_cast<py::ssize_t>(n));
             py::array_t<double> g({static_cast<py::ssize_t>(n), py::ssize_t(3)});
@@ -159,7 +163,7 @@ only what a change reaches.
       .def(
           "is_observed",
           [](const DistanceField& f, ArrayLike points) {
-            const std::vector<double> xyz = queryXyz(points);
+            const std::vector<double> xyz = queryXyz(points, f);
             const std::size_t n = xyz.size() / 3;
             py::array_t<bool> out(static_cast<py::ssize_t>(n));
             bool* o = out.mutable_data();
@@ -172,19 +176,21 @@ only what a change reaches.
       .def(
           "nearest_obstacle",
           [](const DistanceField& f, ArrayLike points) {
-            const std::vector<double> xyz = queryXyz(points);
+            const std::vector<double> xyz = queryXyz(points, f);
             const std::size_t n = xyz.size() / 3;
             py::array_t<double> pos({static_cast<py::ssize_t>(n), py::ssize_t(3)});
             py::array_t<bool> found(static_cast<py::ssize_t>(n));
             double* p = pos.mutable_data();
             bool* ok = found.mutable_data();
-            py::gil_scoped_release release;
-            for (std::size_t i = 0; i < n; ++i) {
-              Eigen::Vector3d o = Eigen::Vector3d::Constant(std::nan(""));
-              ok[i] =
-                  f.nearestObstacle(Eigen::Vector3d(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]), o);
-              if (!ok[i]) o.setConstant(std::nan(""));
-              for (int a = 0; a < 3; ++a) p[3 * i + a] = o[a];
+            {
+              py::gil_scoped_release release;
+              for (std::size_t i = 0; i < n; ++i) {
+                Eigen::Vector3d o = Eigen::Vector3d::Constant(std::nan(""));
+                ok[i] = f.nearestObstacle(
+                    Eigen::Vector3d(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]), o);
+                if (!ok[i]) o.setConstant(std::nan(""));
+                for (int a = 0; a < 3; ++a) p[3 * i + a] = o[a];
+              }
             }
             return py::make_tuple(pos, found);
           },

@@ -117,3 +117,39 @@ def test_bad_input():
         mm.DistanceField(np.zeros((3, 3)), resolution=0.1, max_distance=float("nan"))
     with pytest.raises(ValueError, match="unknown"):
         mm.DistanceField(np.zeros((3, 3)), resolution=0.1, unknown="maybe")
+    # numbers: a bound that underflows float32, a point-map cell edge outside what a map holds
+    with pytest.raises(ValueError, match="float32"):
+        mm.DistanceField(np.zeros((3, 3)), resolution=0.1, max_distance=1e-300)
+    for resolution in (1e-300, 1e300):
+        with pytest.raises(ValueError, match="resolution"):
+            mm.DistanceField(np.zeros((3, 3)), resolution=resolution)
+    field = mm.DistanceField(np.ones((3, 3)), resolution=0.1)
+    # a 3D field is queried with x, y, z: two columns are not read as z = 0
+    for query in (field.query, field.is_observed, field.nearest_obstacle):
+        with pytest.raises(ValueError, match=r"\(N, 3\)"):
+            query(np.ones((4, 2)))
+
+
+def test_nearest_obstacle_is_the_nearest_occupied_centre_and_none_outside():
+    rng = np.random.default_rng(3)
+    pts = rng.uniform(0.0, 3.0, (60, 3))
+    field = mm.DistanceField(pts, resolution=0.1, max_distance=1.0)
+    occupied = field.origin + np.argwhere(occupancy_of(field)) * field.resolution
+    probes = np.vstack([rng.uniform(0.0, 3.0, (200, 3)), [[1e300, 0, 0], [np.nan, 0, 0]]])
+    positions, found = field.nearest_obstacle(probes)
+    assert positions.shape == (202, 3) and found.dtype == np.bool_
+    assert not found[-2:].any() and np.isnan(positions[-2:]).all()
+    for p, q, ok in zip(probes[:-2], positions[:-2], found[:-2]):
+        nearest = np.linalg.norm(occupied - p, axis=1).min()
+        if ok:  # an occupied centre, and none nearer to p
+            assert np.linalg.norm(occupied - q, axis=1).min() < 1e-9
+            assert abs(np.linalg.norm(q - p) - nearest) < 1e-9
+        else:  # only where p's voxel is at the clamp
+            d, _ = field.query(p[None])
+            assert d[0] >= field.max_distance - 1e-6 or np.isnan(d[0])
+
+
+def test_update_from_a_map_of_another_resolution_is_refused():
+    field = mm.DistanceField(random_log_odds_map(5), incremental=True)
+    with pytest.raises(ValueError, match="resolution"):
+        field.update(random_log_odds_map(5, resolution=0.2))

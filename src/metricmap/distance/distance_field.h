@@ -99,6 +99,7 @@ class DistanceField {
   /// field was built from it: only voxels inside the box count. With params().incremental
   /// only the 1D lines that a change reaches are recomputed; the result equals, voxel for
   /// voxel, a field built from scratch over the same box.
+  /// \throws std::invalid_argument for a 2D field or a map of another resolution
   DistanceUpdateReport update(const LogOddsMap& map);
   /// \brief Replace voxel states (same box) and update as update(map) does.
   /// \param changes (index, state) pairs

@@ -10,6 +10,7 @@
 #include "metricmap/detail/voxel_key.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/occupancy/log_odds_map.h"
+#include "metricmap/occupancy/octomap_file_check.h"
 
 namespace metricmap {
 namespace {
@@ -110,9 +111,10 @@ OccupancyBox occupancyBoxOf(const Map2D& map, const DistanceFieldParams& params)
 
 OccupancyBox occupancyBoxOfPoints(const float* xyz, std::size_t stride_bytes, std::size_t count,
                                   double resolution, const DistanceFieldParams& params) {
-  if (!std::isfinite(resolution) || resolution <= 0.0) {
+  if (!(resolution >= kOctomapMinResolution && resolution <= kOctomapMaxResolution)) {
     std::ostringstream msg;
-    msg << "distance field: resolution must be finite and > 0, got " << resolution;
+    msg << "distance field: resolution must be in [" << kOctomapMinResolution << ", "
+        << kOctomapMaxResolution << "] m (the cell edges a map file can hold), got " << resolution;
     throw std::invalid_argument(msg.str());
   }
   const auto* bytes = reinterpret_cast<const unsigned char*>(xyz);

@@ -1,5 +1,8 @@
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
 
 #include "metricmap/distance/distance_field.h"
 #include "metricmap/distance/distance_work.h"
@@ -8,6 +11,14 @@
 namespace metricmap {
 
 DistanceUpdateReport DistanceField::update(const LogOddsMap& map) {
+  if (box_.dimensions != 3)
+    throw std::invalid_argument("update: a 2D field cannot be updated from a 3D log-odds map");
+  if (std::fabs(map.resolution() - box_.resolution) > 1e-9 * box_.resolution) {
+    std::ostringstream msg;
+    msg << "update: the map's resolution " << map.resolution() << " m differs from the field's "
+        << box_.resolution << " m";
+    throw std::invalid_argument(msg.str());
+  }
   std::vector<std::pair<std::size_t, std::uint8_t>> changes;
   DistanceUpdateReport outside;
   const auto& s = box_.shape;
