@@ -18,6 +18,7 @@
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/map_server.h"
 #include "metricmap/io/map_server_reader.h"
+#include "metricmap/io/point_rows_csv.h"
 #include "octomap_quiet.h"
 #include "table.h"
 
@@ -96,7 +97,7 @@ void runDistance(const CLI::App& app, const DistanceOptions& o) {
   params.signed_distance = o.signed_distance;
   params.threads = o.threads;
   std::vector<double> points;
-  if (!o.query.empty()) points = readQueryPoints(o.query);
+  if (!o.query.empty()) points = readPointRows(o.query);
 
   OccupancyBox box;
   std::unique_ptr<Map2D> map2d;

@@ -1,19 +1,32 @@
-// libFuzzer target for map_server maps: any bytes as the YAML (naming a small valid PGM) and as
-// the PGM (named by a valid YAML). Each gives a Map2D or an InputError / CapacityError.
+// libFuzzer target for the map and query files of localisation and distance fields: any bytes
+// as a map_server YAML (naming a small valid PGM), as the PGM (named by a valid YAML), and as a
+// file of point rows (`distance --query`). Each gives its result or an InputError /
+// CapacityError.
 #include <cstdint>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "fuzz_common.h"
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/map_server_reader.h"
+#include "metricmap/io/point_rows_csv.h"
 
 namespace {
 
 void load(const std::string& yaml) {
   try {
     metricmap::loadMapServer(yaml);
+  } catch (const metricmap::InputError&) {
+  } catch (const metricmap::CapacityError&) {
+  }
+}
+
+void readRows(const std::string& path) {
+  try {
+    const std::vector<double> xyz = metricmap::readPointRows(path);
+    if (xyz.empty() || xyz.size() % 3 != 0) __builtin_trap();  // rows come whole
   } catch (const metricmap::InputError&) {
   } catch (const metricmap::CapacityError&) {
   }
@@ -31,6 +44,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   {
     metricmap::fuzz::TempInput yaml(data, size, "map", ".yaml");
     load(yaml.path());
+    readRows(yaml.path());
   }
   metricmap::fuzz::TempInput image(data, size, "map", ".pgm");
   const std::string text = "image: " + image.path() +
