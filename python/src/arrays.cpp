@@ -175,4 +175,10 @@ void registerExceptions(py::module_& m) {
   });
 }
 
+std::vector<double> beamVector(const py::handle& obj, const char* name) {
+  auto a = doublesFromArray(obj, name);
+  if (a.ndim() != 1) throw py::value_error(std::string(name) + " must be 1-D, shape (B,)");
+  return {a.data(), a.data() + a.size()};
+}
+
 }  // namespace metricmap::python

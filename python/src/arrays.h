@@ -62,6 +62,10 @@ PointsArray pointsFromArray(const py::handle& obj, const char* name, bool allow_
 /// \throws py::type_error as pointsFromArray
 CArray<double> doublesFromArray(const py::handle& obj, const char* name);
 
+/// \brief A 1-D array of a scan's beams (angles or ranges) as doubles.
+/// \throws py::value_error "NAME must be 1-D, shape (B,)" for another shape
+std::vector<double> beamVector(const py::handle& obj, const char* name);
+
 /// \brief A read-only array viewing `data` (owned by `owner`, kept alive by the array).
 template <typename T>
 py::array viewOf(const T* data, std::vector<py::ssize_t> shape, std::vector<py::ssize_t> strides,

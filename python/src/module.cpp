@@ -11,6 +11,7 @@ void initCloudIo(py::module_& m);
 void initGrid(py::module_& m);
 void initHeightMap(py::module_& m);
 void initLines(py::module_& m);
+void initLocalization(py::module_& m);
 void initLogOdds(py::module_& m);
 void initOctree(py::module_& m);
 void initOdometry(py::module_& m);
@@ -32,6 +33,7 @@ PYBIND11_MODULE(_metricmap, m) {
   initHeightMap(m);
   initCamera(m);
   initLines(m);
+  initLocalization(m);
   initLogOdds(m);
   initDistance(m);
   initOdometry(m);

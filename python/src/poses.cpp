@@ -118,6 +118,19 @@ std::vector<std::size_t> framesFrom(const py::object& obj, const char* name) {
   return out;
 }
 
+std::vector<std::size_t> selectedFrames(const py::object& frames, std::size_t size) {
+  std::vector<std::size_t> f = framesFrom(frames, "frames");
+  if (frames.is_none())
+    for (std::size_t k = 0; k < size; ++k) f.push_back(k);
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    if (f[k] >= size)
+      throw py::value_error("frame " + std::to_string(f[k]) + " is out of range (" +
+                            std::to_string(size) + " scans)");
+    if (k > 0 && f[k] <= f[k - 1]) throw py::value_error("frames must be strictly increasing");
+  }
+  return f;
+}
+
 py::dict mapServerDict(const MapServerImage& image) {
   py::dict d;
   py::array_t<std::uint8_t> a({py::ssize_t(image.height), py::ssize_t(image.width)});

@@ -49,6 +49,10 @@ Eigen::Isometry3d spatial(const Pose2D& p);
 /// would otherwise mean every scan
 std::vector<std::size_t> framesFrom(const py::object& obj, const char* name);
 
+/// \brief The scans a run function processes: `frames` as framesFrom reads it, each below
+/// `size` and strictly increasing; None selects every scan. \throws py::value_error otherwise
+std::vector<std::size_t> selectedFrames(const py::object& frames, std::size_t size);
+
 /// \brief A map_server image as a dict: image (H, W) uint8 (row 0 at the top), resolution,
 /// origin (x, y of the lower-left corner), mode.
 py::dict mapServerDict(const MapServerImage& image);

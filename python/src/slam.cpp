@@ -29,12 +29,6 @@ namespace metricmap::python {
 
 namespace {
 
-std::vector<double> vectorFrom(const py::handle& obj, const char* name) {
-  auto a = doublesFromArray(obj, name);
-  if (a.ndim() != 1) throw py::value_error(std::string(name) + " must be 1-D, shape (B,)");
-  return {a.data(), a.data() + a.size()};
-}
-
 py::dict mapDict(const LogOddsGrid2D& g) {
   py::dict d;
   py::array_t<float> a({py::ssize_t(g.height()), py::ssize_t(g.width())});
@@ -222,8 +216,8 @@ ValueError
             ObjectGuard guard(p.mutex, "Slam2D");
             if (p.finished()) throw py::value_error("add_scan after finish()");
             LaserScan scan;
-            scan.angles = vectorFrom(angles, "angles");
-            scan.ranges = vectorFrom(ranges, "ranges");
+            scan.angles = beamVector(angles, "angles");
+            scan.ranges = beamVector(ranges, "ranges");
             std::optional<Pose2D> odo;
             if (odometry) odo = boundedPose(*odometry, "odometry");
             if (stamp && !std::isfinite(*stamp))
@@ -416,17 +410,7 @@ lower-left corner, m), mode.
         if (!info.planar)
           throw InputError(info.path + ": slam2d needs 2D laser scans (a CARMEN log); this is a " +
                            info.kind + " source of 3D scans");
-        std::vector<std::size_t> f = framesFrom(frames, "frames");
-        // None selects every scan (framesFrom refuses an empty selection).
-        if (f.empty())
-          for (std::size_t k = 0; k < s.source->size(); ++k) f.push_back(k);
-        for (std::size_t k = 0; k < f.size(); ++k) {
-          if (f[k] >= s.source->size())
-            throw py::value_error("frame " + std::to_string(f[k]) + " is out of range (" +
-                                  std::to_string(s.source->size()) + " scans)");
-          if (k > 0 && f[k] <= f[k - 1])
-            throw py::value_error("frames must be strictly increasing");
-        }
+        const std::vector<std::size_t> f = selectedFrames(frames, s.source->size());
         Slam2DConfig c = config ? *config : Slam2DConfig{};
         if (!loop_closure)
           c.loop_every_n_nodes = c.wide_every_n_nodes = static_cast<std::size_t>(-1);
