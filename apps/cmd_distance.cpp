@@ -76,6 +76,13 @@ void runDistance(const CLI::App& app, const DistanceOptions& o) {
     throw UsageError("--out-costmap needs a 2D map (a map_server YAML)");
   for (const char* opt : {"--inscribed-radius", "--inflation-radius", "--cost-scaling-factor"})
     refuseIgnored(app, opt, costmap, "without --out-costmap");
+  // nav2's inflation reads the unsigned distance with unknown cells as free: a costmap of a
+  // signed field, or of unknown space as obstacles, is not one nav2 would make.
+  if (costmap && (o.signed_distance || o.unknown == "occupied"))
+    throw UsageError(std::string("--out-costmap is made from the unsigned field with unknown "
+                                 "space as free: drop ") +
+                     (o.signed_distance ? "--signed" : "--unknown occupied") +
+                     " or compute the costmap in a run of its own");
   if (o.query.empty() != o.out_query.empty())
     throw UsageError("--query and --out-query go together");
   requireExtension("--out", o.out, {".npy"}, "NumPy");
@@ -89,7 +96,10 @@ void runDistance(const CLI::App& app, const DistanceOptions& o) {
     outputs.push_back({"--out-costmap", cost_files.pgm});
     outputs.push_back({"--out-costmap (YAML)", cost_files.yaml});
   }
-  requireDistinctFiles({{"map", o.map}, {"--query", o.query}}, outputs);
+  RolePaths inputs = {{"map", o.map}, {"--query", o.query}};
+  if (kind == MapKind::MapServer)
+    inputs.push_back({"map's image", readMapServerYaml(o.map).image_path});
+  requireDistinctFiles(inputs, outputs);
 
   DistanceFieldParams params;
   params.max_distance = o.max_distance;

@@ -3,10 +3,13 @@
 // picture, a report with every scan's status.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "cli_common.h"
 #include "commands.h"
@@ -38,16 +41,34 @@ struct LocalizeOptions {
 };
 
 /// --set NAME=VALUE onto the configuration, then the whole of it checked.
-void applySettings(LocalizeOptions& o) {
+/// Each name once, not also given by its own option, the initial pose's windows only with
+/// --initial-pose.
+void applySettings(const CLI::App& app, LocalizeOptions& o) {
+  static const std::vector<std::pair<std::string, std::string>> own = {
+      {"max_range", "--max-range"},
+      {"global_min_score", "--min-score"},
+      {"global_min_margin", "--min-margin"},
+      {"track_min_score", "--track-min-score"},
+      {"lost_after_weak_scans", "--lost-after"}};
+  std::vector<std::string> seen;
   for (const std::string& s : o.set) {
     const auto eq = s.find('=');
     if (eq == std::string::npos || eq == 0)
       throw UsageError("--set: '" + quoteForMessage(s) + "' is not NAME=VALUE");
+    const std::string name = s.substr(0, eq);
     try {
-      setLocalizer2DParameter(o.config, s.substr(0, eq), s.substr(eq + 1));
+      setLocalizer2DParameter(o.config, name, s.substr(eq + 1));
     } catch (const std::invalid_argument& e) {
       throw UsageError(std::string("--set: ") + e.what());
     }
+    if (std::find(seen.begin(), seen.end(), name) != seen.end())
+      throw UsageError("--set: " + name + " is given twice");
+    seen.push_back(name);
+    for (const auto& [field, option] : own)
+      if (field == name && app.count(option) > 0)
+        throw UsageError("--set " + name + " and " + option + " set the same parameter");
+    if (name.rfind("initial_", 0) == 0 && !o.initial_pose_given)
+      throw UsageError("--set " + name + " has no effect without --initial-pose");
   }
   try {
     validateLocalizer2DConfig(o.config);
@@ -127,6 +148,9 @@ void run(const LocalizeOptions& o) {
                         std::fprintf(stderr, "\rlocalize: scan %zu of %zu, %zu localised%s", done,
                                      total, l.stats().localised, done == total ? "\n" : "");
                     });
+  if (!o.out_poses.empty() && result.localizer->stats().localised == 0)
+    throw InputError(o.source.path + ": no scan was localised in " + o.map +
+                     ": nothing to write to --out-poses");
   if (!o.out_poses.empty() && o.pose_format == "tum") {
     for (std::size_t k = 0; k < result.results.size(); ++k)
       if (result.results[k].localised() && !std::isfinite(result.stamps[k]))
@@ -203,12 +227,9 @@ void addLocalizeCommand(CLI::App& app) {
                   "docs/LOCALIZATION.md)");
   addFormatOption(*sub, o->format, {"table", "json"});
   sub->callback([o, sub] {
-    applySettings(*o);
+    applySettings(*sub, *o);
     checkSourceOptions(*sub, o->source);
     refuseIgnored(*sub, "--pose-format", !o->out_poses.empty(), "without --out-poses");
-    RolePaths inputs = sourceInputs(o->source);
-    inputs.push_back({"--map", o->map});
-    requireDistinctFiles(inputs, {{"--out-poses", o->out_poses}, {"--out-png", o->out_png}});
     const auto dot = o->map.find_last_of('.');
     const std::string ext = dot == std::string::npos ? "" : o->map.substr(dot);
     if (ext != ".yaml" && ext != ".yml")
@@ -216,6 +237,10 @@ void addLocalizeCommand(CLI::App& app) {
                        "': give the map_server YAML (.yaml or .yml), not its image");
     requireExtension("--out-poses", o->out_poses, {".tum", ".txt"}, "a pose file");
     requireExtension("--out-png", o->out_png, {".png"}, "a PNG picture");
+    RolePaths inputs = sourceInputs(o->source);
+    inputs.push_back({"--map", o->map});
+    inputs.push_back({"--map's image", readMapServerYaml(o->map).image_path});
+    requireDistinctFiles(inputs, {{"--out-poses", o->out_poses}, {"--out-png", o->out_png}});
     run(*o);
   });
 }

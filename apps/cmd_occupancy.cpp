@@ -4,6 +4,7 @@
 // With --distributed (under mpirun) each rank casts its contiguous share of the frames or files
 // and the voxels are merged over MPI (ranks.h); rank 0 writes the outputs.
 #include <cstdio>
+#include <iostream>
 #include <memory>
 #include <utility>
 
@@ -58,6 +59,7 @@ void castScans(const OccupancyOptions& o, OccupancyInputKind kind, const Ranks& 
     castPcdScans(map, o.inputs, first, last, tot, report);
   }
   if (progress) std::fprintf(stderr, "\n");
+  for (const std::string& w : tot.warnings) std::cerr << "warning: " << w << "\n";
 }
 
 void run(const OccupancyOptions& o, const Ranks& ranks) {
@@ -112,7 +114,12 @@ void addOccupancyCommand(CLI::App& app) {
   sub->add_option("--topic", o->topic, "Bag topic (a scan source that is a ROS bag)");
   sub->add_option("--reference", o->reference,
                   "Poses of the source's scans (KITTI or TUM rows; a bag has none of its own)");
-  sub->add_option("--frames", o->frames, "KITTI or scan source frames, e.g. 0-5,15");
+  sub->add_option("--frames", o->frames, "KITTI or scan source frames, e.g. 0-5,15")
+      ->check(CLI::Validator(
+          [](std::string& s) -> std::string {
+            return s.empty() ? "the frame list is empty (omit --frames for all frames)" : "";
+          },
+          "FRAMES"));
   sub->add_option("--world", o->world, "KITTI world: velodyne (z up) or camera (y down)")
       ->check(CLI::IsMember({"camera", "velodyne"}))
       ->capture_default_str();

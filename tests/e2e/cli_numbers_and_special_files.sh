@@ -156,5 +156,33 @@ else
   echo "skip: $hdr missing"
 fi
 
+# ------------------------------------------------------------------ class: huge angles in scan logs
+# A FLASER line whose laser or odometry heading is 1e17 rad (a double's spacing there is 16 rad)
+# and a CSV scan whose bearing is 1e300 were read as some other heading.
+intel=$D/radish_clf_raw/intel.clf.bz2
+bzcat "$intel" | head -40 | awk '/^FLASER/ && !done { n=$2; $(5+n)="1e17"; done=1 } {print}' >"$in/theta.clf"
+printf '1e300,0.5\n0.1,0.6\n0.2,0.7\n' >"$in/angle.csv"
+case_ 1 "theta.clf: line" slam2d "$in/theta.clf" --out-poses "$o/p.tum"
+case_ 1 "heading 1e+17 rad" lines "$in/theta.clf"
+case_ 1 "angle.csv: line 1: angle 1e+300" lines "$in/angle.csv"
+
+# ------------------------------------------------------------------ class: empty selections
+case_ 2 "the frame list is empty" occupancy "$in/scans" --resolution 0.2 --max-range 20 --frames "" --out "$o/x.bt"
+
+# ------------------------------------------------------------------ class: special files in bag folders
+mkdir -p "$in/bagdir" && mkfifo "$in/bagdir/bagdir_0.db3"
+printf 'rosbag2_bagfile_information:\n  version: 5\n' >"$in/bagdir/metadata.yaml"
+case_ 1 "bagdir_0.db3: cannot open (not a regular file: a FIFO)" info "$in/bagdir"
+
+# ------------------------------------------------------------------ class: WIDTH 0 HEIGHT 0 (scans)
+/usr/bin/python3 -c "
+import numpy as np
+p = np.random.default_rng(1).uniform(-3, 3, (100, 3)).astype(np.float32)
+h = 'VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 0\nHEIGHT 0\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 100\nDATA binary\n'
+open('$in/w00.pcd', 'wb').write(h.encode() + p.tobytes())"
+"$MM" occupancy "$in/w00.pcd" --resolution 0.2 --max-range 20 --out "$tmp/w00.bt" >"$tmp/out" 2>"$tmp/err"
+check "occupancy of a WIDTH 0 HEIGHT 0 scan: read with one warning" \
+  test "$?" = 0 -a "$(grep -c 'header says WIDTH 0 HEIGHT 0 but POINTS 100' "$tmp/err")" = 1
+
 echo "$cases refusal cases"
 finish

@@ -109,6 +109,10 @@ expect_cases \
   "1|far.pcd: point (1e+30, 0, 0)|distance $tmp/far.pcd --resolution 0.1 --out $tmp/bad.npy" \
   "2|--out-costmap|distance $DATA/octomap_geb079/geb079.bt --out-costmap $tmp/bad.pgm" \
   "1|budget|--max-memory 1M distance $DATA/octomap_geb079/geb079.bt --out $tmp/bad.npy"
+ln "$tmp/m.pgm" "$tmp/img.pgm"
+expect 2 "map's image" -- "$MM" distance "$tmp/m.yaml" --out-costmap "$tmp/img.pgm"
+check "the map's image intact" cmp -s "$tmp/m.pgm" "$tmp/img.pgm"
+expect 2 "drop --signed" -- "$MM" distance "$tmp/m.yaml" --signed --out-costmap "$tmp/bad.pgm"
 check "nothing written by the refused runs" test ! -e "$tmp/bad.npy" -a ! -e "$tmp/bad.csv" -a ! -e "$tmp/bad.pgm"
 # A map with no occupied cell: written, and said once on stderr and in the report.
 "$MM" distance "$tmp/e.yaml" --out "$tmp/e.npy" --format json >"$tmp/e.json" 2>"$tmp/e.err"

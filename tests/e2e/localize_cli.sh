@@ -56,5 +56,31 @@ expect_cases \
   "2|--map|localize $log --map $tmp/m.pgm" \
   "2|--pose-format|localize $log --map $tmp/m.yaml --pose-format kitti" \
   "2|global_min_score|localize $log --map $tmp/m.yaml --set global_min_score=2" \
-  "2|unknown localisation parameter|localize $log --map $tmp/m.yaml --set nope=1"
+  "2|unknown localisation parameter|localize $log --map $tmp/m.yaml --set nope=1" \
+  "2|--set max_range and --max-range set the same parameter|localize $log --map $tmp/m.yaml --max-range 5 --set max_range=30" \
+  "2|--set lost_after_weak_scans and --lost-after|localize $log --map $tmp/m.yaml --lost-after 1 --set lost_after_weak_scans=50" \
+  "2|no effect without --initial-pose|localize $log --map $tmp/m.yaml --set initial_linear_window=2" \
+  "2|voxel_filter must be in|localize $log --map $tmp/m.yaml --set voxel_filter=1e-30" \
+  "2|max_range must be in|localize $log --map $tmp/m.yaml --set max_range=1e-25"
+
+# Maps of cells finer than a map file holds, a yaw no double resolves, a search beyond the
+# budget: refused before anything is allocated (a 1e-9 m map crashed, a 1e-5 m one grew to 24 GB).
+for v in "tiny|resolution: 1e-9|resolution 1e-9 must be in" "yaw|origin: [0, 0, 1e30]|origin yaw 1e30"; do
+  IFS='|' read -r name line needle <<<"$v"
+  sed "s/^resolution:.*/resolution: 0.05/" "$tmp/m.yaml" >"$tmp/$name.yaml"
+  key=${line%%:*}
+  sed -i "s/^$key:.*/$line/" "$tmp/$name.yaml"
+  expect 1 "$needle" -- "$MM" localize "$log" --map "$tmp/$name.yaml" --frames 300 --out-poses "$tmp/x.tum"
+done
+sed "s/^resolution:.*/resolution: 0.001/" "$tmp/m.yaml" >"$tmp/fine.yaml"
+expect 1 "a branch-and-bound search needs" -- "$MM" --max-memory 256M localize "$log" \
+  --map "$tmp/fine.yaml" --frames 300 --out-poses "$tmp/x.tum"
+# Nothing localised: no pose file, said so.
+expect 1 "no scan was localised" -- "$MM" localize "$log" --map "$tmp/m.yaml" --frames 300-310 \
+  --min-score 0.99 --out-poses "$tmp/x.txt" --pose-format kitti
+check "nothing written" test ! -e "$tmp/x.tum" -a ! -e "$tmp/x.txt"
+# An output that is (a link to) the map's image is never replaced.
+ln "$tmp/m.pgm" "$tmp/link.txt"
+expect 2 "--map's image" -- "$MM" localize "$log" --map "$tmp/m.yaml" --frames 300 --out-poses "$tmp/link.txt"
+check "the map's image intact" cmp -s "$tmp/m.pgm" "$tmp/link.txt"
 finish

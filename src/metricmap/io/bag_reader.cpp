@@ -35,7 +35,7 @@ std::string storageFile(const std::string& dir) {
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
     const std::string x = lowerExtension(e.path());
-    if ((x == ".db3" || x == ".mcap") && e.is_regular_file(ec)) files.push_back(e.path().string());
+    if (x == ".db3" || x == ".mcap") files.push_back(e.path().string());
   }
   if (ec) throw InputError(dir + ": cannot list the folder (" + ec.message() + ")");
   std::sort(files.begin(), files.end());
@@ -43,6 +43,7 @@ std::string storageFile(const std::string& dir) {
   if (files.size() > 1)
     throw InputError(dir + ": a bag split in " + std::to_string(files.size()) +
                      " files; give one file (" + files.front() + ", ...)");
+  requireRegularFile(files.front());  // a FIFO or directory named like storage: said so
   return files.front();
 }
 

@@ -1,9 +1,13 @@
 #include "metricmap/io/carmen_log.h"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "metricmap/common/parse_number.h"
+#include "metricmap/common/rigid_transform.h"
+#include "metricmap/exceptions.h"
 
 namespace metricmap {
 namespace {
@@ -141,6 +145,20 @@ CarmenLineKind parseCarmenLine(const std::vector<std::string_view>& t, CarmenLas
   return t[0] == "ODOM" ? CarmenLineKind::Odometry : CarmenLineKind::Other;
 }
 
+void CarmenLogReader::checkPoseAngles(const CarmenLaser& out) const {
+  // A heading beyond ±kMaxAngle is a number a double no longer resolves to a turn (its
+  // spacing at 1e17 is 16 rad): the line is refused, never read as some other heading.
+  for (const auto& [what, pose] :
+       {std::pair{"laser pose", out.laser_pose}, std::pair{"odometry pose", out.odometry}}) {
+    if (pose && std::fabs(pose->theta) > kMaxAngle) {
+      std::ostringstream msg;
+      msg << path() << ": line " << out.line << ": " << what << " heading " << pose->theta
+          << " rad is beyond +-" << kMaxAngle << " rad";
+      throw InputError(msg.str());
+    }
+  }
+}
+
 CarmenLogReader::CarmenLogReader(const std::string& path, const TextLimits& limits)
     : lines_(path, limits) {}
 
@@ -150,6 +168,7 @@ bool CarmenLogReader::next(CarmenLaser& out) {
     switch (parseCarmenLine(tokens_, out)) {
       case CarmenLineKind::Laser:
         out.line = lines_.lineNumber();
+        checkPoseAngles(out);
         return true;
       case CarmenLineKind::Malformed:
         ++skipped_;

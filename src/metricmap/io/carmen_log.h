@@ -64,7 +64,8 @@ class CarmenLogReader {
 
   /// \brief The next FLASER/ROBOTLASER1 message; other lines are counted or ignored.
   /// \return false at the end of the log
-  /// \throws InputError naming the file (and line) when the text cannot be read
+  /// \throws InputError naming the file (and line) when the text cannot be read, or a laser
+  /// line's pose has a heading beyond ±kMaxAngle rad
   bool next(CarmenLaser& out);
 
   /// \brief Skip lines without parsing them, so that the next line read is `line` (1-based);
@@ -84,6 +85,8 @@ class CarmenLogReader {
   std::vector<std::string_view> tokens_;
   std::size_t skipped_ = 0;
   std::size_t odometry_ = 0;
+
+  void checkPoseAngles(const CarmenLaser& out) const;
 };
 
 /// \brief Split a line at blanks (space, tab, CR, VT, FF).

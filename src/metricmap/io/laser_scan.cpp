@@ -182,6 +182,12 @@ ScanLog readAngleRangeCsv(const std::string& path) {
       throw InputError(path + ": line " + std::to_string(n) + ": expected 'angle,range', got '" +
                        quoteForMessage(line) + "'");
     }
+    if (!(std::fabs(a) <= 2.0 * M_PI)) {
+      std::ostringstream msg;
+      msg << path << ": line " << n << ": angle " << a
+          << " is outside [-2 pi, 2 pi]: a beam's bearing in radians";
+      throw InputError(msg.str());
+    }
     scan.angles.push_back(a);
     scan.ranges.push_back(r > 0.0 && r <= kMaxLaserRange ? r : kNaN);
   }

@@ -10,6 +10,7 @@
 
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/common/parse_number.h"
+#include "metricmap/common/rigid_transform.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/input_file.h"
 
@@ -20,6 +21,9 @@ namespace {
 constexpr std::uint64_t kMaxYamlBytes = 1u << 20;
 /// Pixels per side at most (as libpng's limit in io/).
 constexpr std::uint64_t kMaxSide = 1u << 20;
+/// Cell edges a map file holds (as OctoMap files in the occupancy module): finer cells make
+/// every search over the map (localisation's rotations, distance fields) unboundedly large.
+constexpr double kMapMinResolution = 1e-4, kMapMaxResolution = 1e3;
 
 const YAML::Node required(const YAML::Node& root, const char* key, const std::string& path) {
   const YAML::Node n = root[key];
@@ -136,9 +140,9 @@ MapServerYaml readMapServerYaml(const std::string& path) {
                        ? y.image
                        : path.substr(0, slash + 1) + y.image;
     y.resolution = number(required(root, "resolution", path), path + ": resolution");
-    if (!(y.resolution > 0) || y.resolution > 1e6)
+    if (!(y.resolution >= kMapMinResolution && y.resolution <= kMapMaxResolution))
       throw InputError(path + ": resolution " + quoteForMessage(root["resolution"].Scalar()) +
-                       " must be in (0, 1e6] m");
+                       " must be in [0.0001, 1000] m (the cell edges a map file holds)");
     const YAML::Node origin = required(root, "origin", path);
     if (!origin.IsSequence() || origin.size() != 3)
       throw InputError(path + ": origin must be [x, y, yaw]");
@@ -147,6 +151,9 @@ MapServerYaml readMapServerYaml(const std::string& path) {
     y.origin_yaw = number(origin[2], path + ": origin yaw");
     if (std::fabs(y.origin_x) > 1e9 || std::fabs(y.origin_y) > 1e9)
       throw InputError(path + ": origin beyond +-1e9 m");
+    if (std::fabs(y.origin_yaw) > kMaxAngle)
+      throw InputError(path + ": origin yaw " + quoteForMessage(origin[2].Scalar()) +
+                       " is beyond +-1e6 rad");
     const YAML::Node negate = required(root, "negate", path);
     const std::string ns = negate.IsScalar() ? negate.Scalar() : "";
     if (ns == "0" || ns == "false")

@@ -9,10 +9,11 @@ void validateLocalizer2DConfig(const Localizer2DConfig& c) {
   auto need = [](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(what);
   };
-  need(std::isfinite(c.min_range) && c.min_range >= 0, "min_range must be finite and >= 0");
-  need(std::isfinite(c.max_range) && c.max_range > c.min_range,
-       "max_range must be finite and greater than min_range");
-  need(std::isfinite(c.voxel_filter) && c.voxel_filter > 0, "voxel_filter must be > 0");
+  // The ranges below are the command's too (its options check the same bounds).
+  need(c.min_range >= 0 && c.min_range <= 1e4, "min_range must be in [0, 10000] m");
+  need(c.max_range >= 0.01 && c.max_range <= 1e4, "max_range must be in [0.01, 10000] m");
+  need(c.max_range > c.min_range, "max_range must be greater than min_range");
+  need(c.voxel_filter >= 0.001 && c.voxel_filter <= 10, "voxel_filter must be in [0.001, 10] m");
   need(c.occupied_probability > 0.5 && c.occupied_probability < 1,
        "occupied_probability must be in (0.5, 1)");
   need(c.free_probability > 0 && c.free_probability < 0.5, "free_probability must be in (0, 0.5)");
@@ -20,7 +21,8 @@ void validateLocalizer2DConfig(const Localizer2DConfig& c) {
        "branch_and_bound_depth must be in 1..16");
   need(c.global_coarsening >= 1 && c.global_coarsening <= 8, "global_coarsening must be in 1..8");
   need(c.global_search_points >= 10, "global_search_points must be >= 10");
-  need(c.global_min_score > 0 && c.global_min_score < 1, "global_min_score must be in (0, 1)");
+  need(c.global_min_score >= 0.01 && c.global_min_score <= 0.99,
+       "global_min_score must be in [0.01, 0.99]");
   need(c.global_min_margin >= 0 && c.global_min_margin <= 1, "global_min_margin must be in [0, 1]");
   need(c.global_max_crossing >= 0 && c.global_max_crossing <= 1,
        "global_max_crossing must be in [0, 1]");
@@ -52,8 +54,10 @@ void validateLocalizer2DConfig(const Localizer2DConfig& c) {
   need(std::isfinite(c.rotation_weight) && c.rotation_weight >= 0, "rotation_weight must be >= 0");
   need(c.refine_iterations >= 1 && c.refine_iterations <= 1000,
        "refine_iterations must be in 1..1000");
-  need(c.track_min_score > 0 && c.track_min_score < 1, "track_min_score must be in (0, 1)");
-  need(c.lost_after_weak_scans >= 1, "lost_after_weak_scans must be >= 1");
+  need(c.track_min_score >= 0.01 && c.track_min_score <= 0.99,
+       "track_min_score must be in [0.01, 0.99]");
+  need(c.lost_after_weak_scans >= 1 && c.lost_after_weak_scans <= 1000000,
+       "lost_after_weak_scans must be in 1..1000000");
 }
 
 }  // namespace metricmap

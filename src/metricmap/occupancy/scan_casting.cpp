@@ -108,6 +108,7 @@ void castPcdScans(LogOddsMap& map, const std::vector<std::string>& paths, std::s
     Cloud scan;
     const LoadReport lr = loadCloud(paths[k], scan);
     totals.load_s += secondsSince(t);
+    totals.warnings.insert(totals.warnings.end(), lr.warnings.begin(), lr.warnings.end());
     insertInto(map, scan, nullptr, lr.nonfinite_dropped, totals, paths[k]);
     if (progress) progress(k + 1 - first, last - first);
   }

@@ -21,6 +21,7 @@ namespace metricmap {
 struct ScanCastTotals {
   std::size_t frames = 0, points = 0, beams = 0, cut = 0, non_finite = 0;
   double load_s = 0, insert_s = 0;
+  std::vector<std::string> warnings;  ///< the readers' warnings (e.g. a PCD's header), in order
 };
 
 /// \brief Called after each scan with (scans done, scans to do).

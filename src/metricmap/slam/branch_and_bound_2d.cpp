@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "metricmap/common/memory_budget.h"
+#include "metricmap/exceptions.h"
 
 namespace metricmap {
 namespace {
@@ -137,8 +139,23 @@ std::optional<ScanMatch2D> BranchAndBoundMatcher2D::match(
   candidates_ = 0;
   if (points.empty()) return std::nullopt;
   const double step = angularSearchStep(res_, points);
-  const int m = static_cast<int>(std::ceil(angular_window / step - 1e-9));
-  const int window = static_cast<int>(std::floor(linear_window / res_ + 1e-9));
+  // The search's size, priced before anything is allocated: a map of very fine cells (or a
+  // wide window) asks for more rotations and offsets than any budget holds.
+  const double rotations = 2.0 * std::ceil(angular_window / step - 1e-9) + 1.0;
+  const double offsets = 2.0 * std::floor(linear_window / res_ + 1e-9) + 1.0;
+  const double top_offsets = std::ceil(offsets / static_cast<double>(1 << (levels_.size() - 1)));
+  const double bytes = rotations * static_cast<double>(points.size()) *
+                           (2.0 + static_cast<double>(levels_.size())) * sizeof(std::int64_t) +
+                       rotations * top_offsets * top_offsets * sizeof(Candidate);
+  if (!(step > 0.0) || !(rotations < 1e9) || !(offsets < 1e9) || !(bytes < 1e18)) {
+    std::ostringstream msg;
+    msg << "branch-and-bound search at " << res_ << " m cells: " << rotations << " rotations x "
+        << offsets << " offsets per axis is beyond any memory budget";
+    throw CapacityError(msg.str());
+  }
+  checkMemory(static_cast<std::uint64_t>(bytes), 1, "a branch-and-bound search");
+  const int m = static_cast<int>((rotations - 1.0) / 2.0);
+  const int window = static_cast<int>((offsets - 1.0) / 2.0);
   const double inv = 1.0 / res_;
   std::vector<Rotated> rotated(static_cast<std::size_t>(2 * m + 1));
   for (int a = -m; a <= m; ++a) {
