@@ -73,6 +73,11 @@ TEST(ArgumentRules, NonFiniteValues) {
   EXPECT_THROW(cameraToMap(kNaN, 0.1, 0.0), std::invalid_argument);
   EXPECT_THROW(cameraToMap(1.0, kInf, 0.0), std::invalid_argument);
   EXPECT_THROW(cameraToMap(1.0, 0.1, kNaN), std::invalid_argument);
+  // The CLI's --pitch-deg (+-90) and --yaw-deg (+-360) bounds, in the library for both fronts.
+  EXPECT_THROW(cameraToMap(1.0, 1e17, 0.0), std::invalid_argument);
+  EXPECT_THROW(cameraToMap(1.0, -M_PI / 2 - 1e-9, 0.0), std::invalid_argument);
+  EXPECT_THROW(cameraToMap(1.0, 0.1, 1e30), std::invalid_argument);
+  EXPECT_NO_THROW(cameraToMap(1.0, 90.0 * (M_PI / 180.0), -360.0 * (M_PI / 180.0)));
   LidarOdometryConfig c;
   c.deskew = true;
   c.min_range = 0.0;

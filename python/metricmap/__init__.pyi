@@ -490,7 +490,7 @@ def split_and_merge(
     min_points: int = 5,
     min_length: float = 0.1,
     max_gap: float = 0.0,
-    purge: str = "before-merge",
+    purge: Optional[str] = None,
     chi2: Optional[float] = None,
     range_sigma: float = 0.01,
     bearing_sigma: float = 0.0017453292519943296,

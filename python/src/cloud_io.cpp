@@ -62,6 +62,12 @@ py::dict reportDict(const LoadReport& r) {
   return d;
 }
 
+/// What the CLI prints as `warning: ...` about a file it read, as Python UserWarnings.
+void warnAbout(const LoadReport& r) {
+  for (const std::string& w : r.warnings)
+    if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
+}
+
 }  // namespace
 
 void initCloudIo(py::module_& m) {
@@ -69,10 +75,12 @@ void initCloudIo(py::module_& m) {
       "read_points",
       [](const std::filesystem::path& path) {
         auto cloud = std::make_unique<pcl::PointCloud<pcl::PointXYZ>>();
+        LoadReport report;
         {
           py::gil_scoped_release release;
-          loadCloud(path.string(), *cloud);
+          report = loadCloud(path.string(), *cloud);
         }
+        warnAbout(report);
         const py::ssize_t n = static_cast<py::ssize_t>(cloud->size());
         float* data = n ? cloud->points[0].data : nullptr;
         // The array owns the cloud: (N, 4) float32 rows x, y, z, 1 — PCL's own memory.
@@ -103,16 +111,24 @@ Raises
 ------
 InputError (an OSError)
     missing, unreadable, malformed or truncated file, no x/y/z, no finite point.
+
+Warns
+-----
+UserWarning
+    what `metricmap` prints as a warning about the file (a PCD header with WIDTH 0 HEIGHT 0
+    but POINTS n, skipped ASCII lines).
 )doc");
 
   m.def(
       "read_cloud",
       [](const std::filesystem::path& path) {
         pcl::PCLPointCloud2 blob;
+        LoadReport report;
         {
           py::gil_scoped_release release;
-          loadCloudBlob(path.string(), blob);
+          report = loadCloudBlob(path.string(), blob);
         }
+        warnAbout(report);
         const std::size_t n = std::size_t{blob.width} * blob.height;
         py::dict fields;
         for (const pcl::PCLPointField& f : blob.fields) {
@@ -147,6 +163,11 @@ Raises
 ------
 InputError (an OSError)
     as :func:`read_points`.
+
+Warns
+-----
+UserWarning
+    as :func:`read_points`.
 )doc");
 
   m.def(
@@ -175,6 +196,8 @@ dict
       [](const std::filesystem::path& path, ArrayLike points, const std::string& format) {
         const PcdFormat fmt = parsePcdFormat(format);
         PointsArray p = pointsFromArray(points, "points", true);
+        if (p.span.size == 0)  // read_points and the CLI refuse a PCD that declares 0 points
+          throw py::value_error("points is empty (0 points): a PCD file needs at least one point");
         pcl::PointCloud<pcl::PointXYZ> cloud;
         cloud.resize(p.span.size);
         for (std::size_t i = 0; i < p.span.size; ++i) {
@@ -208,7 +231,7 @@ Raises
 OSError
     the file cannot be written.
 ValueError
-    unknown format, wrong shape.
+    unknown format, wrong shape, no points (a PCD of 0 points is refused by the readers).
 )doc");
 }
 

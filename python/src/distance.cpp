@@ -12,6 +12,7 @@
 
 #include "arrays.h"
 #include "log_odds_object.h"
+#include "metricmap/common/format_number.h"
 #include "metricmap/distance/distance_sources.h"
 #include "metricmap/distance/inflation_costmap.h"
 #include "metricmap/io/map_server_reader.h"
@@ -33,7 +34,13 @@ std::vector<double> queryXyz(const py::handle& obj, const DistanceField& field) 
   std::vector<double> xyz(3 * n, 0.0);
   const double* d = a.data();
   for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t c = 0; c < cols; ++c) xyz[3 * i + c] = d[cols * i + c];
+    for (std::size_t c = 0; c < cols; ++c) {
+      const double v = d[cols * i + c];
+      if (!std::isfinite(v))
+        throw py::value_error("points row " + std::to_string(i) + ": " + formatNumber(v) +
+                              " is not a finite number");
+      xyz[3 * i + c] = v;
+    }
   return xyz;
 }
 
@@ -85,11 +92,21 @@ only what a change reaches.
             if (py::isinstance<py::str>(source) ||
                 py::isinstance(source, py::module_::import("os").attr("PathLike"))) {
               if (resolution) throw py::value_error("resolution applies to point arrays only");
+              if (incremental)
+                throw py::value_error(
+                    "incremental has no effect on a map_server map: a 2D field cannot be updated "
+                    "from a 3D log-odds map");
               const std::string path = py::str(py::module_::import("os").attr("fspath")(source));
               py::gil_scoped_release release;
               const Map2D map = loadMapServer(path);
               return std::make_unique<DistanceField>(occupancyBoxOf(map, p), p);
             }
+            if (!py::hasattr(source, "__len__") && !py::hasattr(source, "__array__") &&
+                !PyObject_CheckBuffer(source.ptr()))
+              throw py::type_error(
+                  "source must be a LogOddsMap, a map_server YAML path or an (N, 3) point array, "
+                  "got " +
+                  std::string(py::str(py::type::of(source).attr("__name__"))));
             if (!resolution) throw py::value_error("a point array needs resolution");
             const PointsArray pts = pointsFromArray(source, "points");
             py::gil_scoped_release release;

@@ -23,11 +23,14 @@ namespace metricmap::python {
 
 namespace {
 
-Trajectory trajectoryFrom(const py::handle& poses, const py::object& stamps, const char* name) {
+/// `name` names the poses argument; the stamps argument is `stamps_name` (default name_stamps).
+Trajectory trajectoryFrom(const py::handle& poses, const py::object& stamps, const char* name,
+                          const char* stamps_name = nullptr) {
   Trajectory t;
   t.poses = posesFrom(poses, name);
   if (!stamps.is_none())
-    t.stamps = stampsFrom(stamps, (std::string(name) + "_stamps").c_str(), t.size());
+    t.stamps = stampsFrom(
+        stamps, stamps_name ? stamps_name : (std::string(name) + "_stamps").c_str(), t.size());
   return t;
 }
 
@@ -84,7 +87,7 @@ InputError
       "write_trajectory",
       [](const std::filesystem::path& path, ArrayLike poses, py::object stamps,
          const std::string& format) {
-        const Trajectory t = trajectoryFrom(poses, stamps, "poses");
+        const Trajectory t = trajectoryFrom(poses, stamps, "poses", "stamps");
         std::string text;
         if (format == "kitti" && !stamps.is_none())
           throw py::value_error("KITTI rows have no stamps: format='tum' writes them");

@@ -66,7 +66,7 @@ cells centred on the origin, row 0 the far (forward) edge; height bins as np.dig
           "add_frame",
           [](PyHeightMap& self, ArrayLike points, ArrayLike to_map) {
             ObjectGuard guard(self.mutex, "HeightMap");
-            PointsArray p = pointsFromArray(points, "points", true);
+            PointsArray p = pointsFromArray(points, "points");
             const Eigen::Isometry3d t = isometryFrom(to_map);
             const pcl::PointCloud<pcl::PointXYZ> cloud = cloudOf(p);
             py::gil_scoped_release release;

@@ -13,6 +13,8 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "arrays.h"
+#include "metricmap/common/float_range.h"
+#include "metricmap/common/format_number.h"
 #include "metricmap/io/laser_scan.h"
 #include "metricmap/lines/split_and_merge.h"
 
@@ -78,16 +80,26 @@ InputError (an OSError)
   m.def(
       "split_and_merge",
       [](ArrayLike angles, ArrayLike ranges, double distance_threshold, double angle_threshold,
-         std::int64_t min_points, double min_length, double max_gap, const std::string& purge,
-         std::optional<double> chi2, double range_sigma, double bearing_sigma) {
+         std::int64_t min_points, double min_length, double max_gap,
+         std::optional<std::string> purge, std::optional<double> chi2, double range_sigma,
+         double bearing_sigma) {
         if (min_points < 0) throw py::value_error("min_points must be >= 0");
+        // A piece holds at least one point: min_points 1 purges no more than 0.
+        if (purge && !(min_points > 1 || min_length > 0.0))
+          throw py::value_error("purge has no effect with min_points " +
+                                std::to_string(min_points) +
+                                " and min_length 0: nothing is purged (every segment has a point)");
+        if (purge && !(angle_threshold > 0.0))
+          throw py::value_error(
+              "purge has no effect with angle_threshold 0: there is no merge step to purge "
+              "before or after");
         SplitAndMergeParams params;
         params.distance_threshold = distance_threshold;
         params.angle_threshold = angle_threshold;
         params.min_points = static_cast<std::size_t>(min_points);
         params.min_length = min_length;
         params.max_gap = max_gap;
-        params.purge_order = parsePurge(purge);
+        params.purge_order = parsePurge(purge.value_or("before-merge"));
         params.chi2_split = chi2.has_value();
         if (chi2) params.chi2_threshold = *chi2;
         params.range_sigma = range_sigma;
@@ -100,6 +112,11 @@ InputError (an OSError)
         scan.ranges.assign(r.data(), r.data() + r.size());
         scan.angles.assign(a.data(), a.data() + a.size());
         validateLaserScan(scan);
+        for (std::size_t k = 0; k < scan.ranges.size(); ++k)
+          if (beyondFloatRange(scan.ranges[k]))  // would become inf: a beam without a return
+            throw py::value_error("beam " + std::to_string(k) + ": range " +
+                                  formatNumber(scan.ranges[k]) +
+                                  " is beyond the single-precision range");
         // An invalid beam (NaN, <= 0) gives no point.
         for (double& range : scan.ranges)
           if (!(range > 0.0)) range = std::nan("");
@@ -150,7 +167,7 @@ InputError (an OSError)
       },
       py::arg("angles"), py::arg("ranges"), py::kw_only(), py::arg("distance_threshold") = 0.05,
       py::arg("angle_threshold") = 5.0 * 3.14159265358979323846 / 180.0, py::arg("min_points") = 5,
-      py::arg("min_length") = 0.1, py::arg("max_gap") = 0.0, py::arg("purge") = "before-merge",
+      py::arg("min_length") = 0.1, py::arg("max_gap") = 0.0, py::arg("purge") = py::none(),
       py::arg("chi2") = py::none(), py::arg("range_sigma") = 0.01,
       py::arg("bearing_sigma") = 0.1 * 3.14159265358979323846 / 180.0, R"doc(
 Split & Merge line segments of one ordered 2D scan (the `metricmap lines` algorithm):
@@ -160,7 +177,8 @@ Parameters
 ----------
 angles, ranges : array_like, shape (B,)
     Radians (finite, within [-2 pi, 2 pi]) and metres, beam order: the order ``Scan.laser``
-    and :func:`read_scan_log` give. A range that is NaN or <= 0 is an invalid beam.
+    and :func:`read_scan_log` give. A range that is NaN or <= 0 is an invalid beam; a finite
+    range beyond the float32 range (3.4e38) is a ValueError.
 distance_threshold : float
     Split where the farthest point is further than this from the chord, metres (> 0).
 angle_threshold : float
@@ -169,7 +187,9 @@ min_points, min_length : int, float
     Purge segments with fewer points / shorter (0: off).
 max_gap : float
     Split where consecutive valid points are further apart, metres (0: off).
-purge : {'before-merge', 'after-merge'}
+purge : {'before-merge', 'after-merge'}, optional
+    When purge runs (default before-merge); giving it where nothing is purged (min_points <= 1
+    and min_length 0) or nothing is merged (angle_threshold 0) is a ValueError.
 chi2 : float, optional
     Split on the chi-square test d^2 / var(d) > chi2 instead (e.g. 6.63).
 range_sigma, bearing_sigma : float

@@ -7,6 +7,8 @@
 #include <pybind11/stl.h>
 
 #include "arrays.h"
+#include "metricmap/common/float_range.h"
+#include "metricmap/common/format_number.h"
 #include "metricmap/octree/octree_kernel.h"
 
 namespace metricmap::python {
@@ -157,13 +159,17 @@ Node arrays are read-only views of the nodes held by this object (they keep it a
 
   m.def(
       "octree",
-      [](ArrayLike points, std::int64_t max_points, float min_cell_size, bool cubic,
+      [](ArrayLike points, std::int64_t max_points, double min_cell_size, bool cubic,
          std::optional<std::pair<ArrayLike, ArrayLike>> root_box, unsigned threads) {
+        // named as given: 1e39 is not a float (it would read inf), 1e-300 would read 0
+        if (beyondFloatRange(min_cell_size) || belowFloatRange(min_cell_size))
+          throw py::value_error("min_cell_size " + formatNumber(min_cell_size) +
+                                " is outside the single-precision range");
         if (max_points < 0)
           throw py::value_error("max_points must be >= 0, got " + std::to_string(max_points));
         OctreeParams params;
         params.max_points_per_leaf = static_cast<std::size_t>(max_points);
-        params.min_cell_size = min_cell_size;
+        params.min_cell_size = static_cast<float>(min_cell_size);
         params.cubic_root = cubic;
         params.threads = threads;
         if (root_box) {
@@ -182,7 +188,7 @@ Node arrays are read-only views of the nodes held by this object (they keep it a
         }
         return result;
       },
-      py::arg("points"), py::arg("max_points") = 100, py::arg("min_cell_size") = 1.0f,
+      py::arg("points"), py::arg("max_points") = 100, py::arg("min_cell_size") = 1.0,
       py::arg("cubic") = false, py::arg("root_box") = py::none(), py::arg("threads") = 0u,
       R"doc(
 Build an adaptive octree: a node splits into 8 while it holds more than `max_points` points

@@ -164,10 +164,13 @@ RuntimeError
           "last_result",
           [](const PyOdometry& self) {
             ObjectGuard guard(self.mutex, "LidarOdometry");
+            if (self.odometry.poses().empty())
+              throw py::value_error("no frame yet: call register_frame(points) first");
             return resultDict(self.last);
           },
           "dict: what registering the last frame gave (pose, prediction, points_in, "
-          "points_used, points_source, correspondences, iterations, threshold, ...).")
+          "points_used, points_source, correspondences, iterations, threshold, ...); "
+          "ValueError before the first frame (and after reset).")
       .def_property_readonly(
           "poses",
           [](const PyOdometry& self) {

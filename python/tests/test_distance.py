@@ -135,10 +135,12 @@ def test_nearest_obstacle_is_the_nearest_occupied_centre_and_none_outside():
     pts = rng.uniform(0.0, 3.0, (60, 3))
     field = mm.DistanceField(pts, resolution=0.1, max_distance=1.0)
     occupied = field.origin + np.argwhere(occupancy_of(field)) * field.resolution
-    probes = np.vstack([rng.uniform(0.0, 3.0, (200, 3)), [[1e300, 0, 0], [np.nan, 0, 0]]])
+    probes = np.vstack([rng.uniform(0.0, 3.0, (200, 3)), [[1e300, 0, 0], [-1e300, 0, 0]]])
     positions, found = field.nearest_obstacle(probes)
     assert positions.shape == (202, 3) and found.dtype == np.bool_
     assert not found[-2:].any() and np.isnan(positions[-2:]).all()
+    with pytest.raises(ValueError, match="row 1: nan is not a finite number"):
+        field.nearest_obstacle([[1, 1, 1], [np.nan, 0, 0]])
     for p, q, ok in zip(probes[:-2], positions[:-2], found[:-2]):
         nearest = np.linalg.norm(occupied - p, axis=1).min()
         if ok:  # an occupied centre, and none nearer to p

@@ -72,3 +72,125 @@ def test_the_limits_themselves_are_accepted(tmp_path):
     mm.write_trajectory(tmp_path / "t.txt", np.stack([I4, I4]), [0.0, 1e-9], format="tum")
     poses, stamps = mm.read_trajectory(tmp_path / "t.txt")
     np.testing.assert_allclose(stamps, [0.0, 1e-9], atol=1e-12)
+
+
+def small_map(tmp):
+    """A 20 x 20 map_server map of 0.1 m cells: occupied border, free inside."""
+    img = np.full((20, 20), 254, np.uint8)
+    img[0, :] = img[-1, :] = img[:, 0] = img[:, -1] = 0
+    (tmp / "m.pgm").write_bytes(b"P5\n20 20\n255\n" + img.tobytes())
+    (tmp / "m.yaml").write_text("image: m.pgm\nresolution: 0.1\norigin: [0, 0, 0]\nnegate: 0\n"
+                                "occupied_thresh: 0.65\nfree_thresh: 0.196\n")
+    return tmp / "m.yaml"
+
+
+def refusals6(tmp):
+    """Sixth pass: unread values, options without effect, files the readers refuse, exception
+    types and messages quoting the value given."""
+    pts = np.array([[1.0, 0.0, 0.0], [2.0, 1.0, 0.5]], np.float32)
+    angles = np.linspace(-1.5, 1.5, 181)
+    far = np.full(181, 3.0)
+    far[::2] = 1e300
+    three = np.stack([I4, I4, I4])
+    yaml = small_map(tmp)
+    return [
+        # nothing done yet
+        ("odometry result before any frame", lambda: mm.LidarOdometry().last_result, ValueError, "no frame yet"),
+        # numbers beyond float32
+        ("split_and_merge range 1e300", lambda: mm.split_and_merge(angles, far), ValueError, "range 1e+300"),
+        ("split_and_merge range 1e39", lambda: mm.split_and_merge(angles, np.where(far > 3, 1e39, 3.0)),
+         ValueError, "range 1e+39"),
+        ("octree min_cell_size 1e-300", lambda: mm.octree(pts, max_points=1, min_cell_size=1e-300),
+         ValueError, "min_cell_size 1e-300 is outside the single-precision range"),
+        ("octree min_cell_size 1e39", lambda: mm.octree(pts, max_points=1, min_cell_size=1e39),
+         ValueError, "min_cell_size 1e+39"),
+        # angles beyond the CLI's bounds
+        ("camera pitch 1e17", lambda: mm.camera_to_map(1.0, 1e17), ValueError, "pitch 1e+17"),
+        ("camera pitch just past 90 degrees", lambda: mm.camera_to_map(1.0, math.pi / 2 + 1e-6), ValueError,
+         "-90 to 90 degrees"),
+        ("camera yaw 1e30", lambda: mm.camera_to_map(1.0, 0.1, yaw=1e30), ValueError, "yaw 1e+30"),
+        # non-finite query points
+        ("distance query NaN", lambda: mm.DistanceField(yaml).query([[np.nan, 0, 0]]), ValueError, "nan"),
+        ("nearest obstacle NaN", lambda: mm.DistanceField(yaml).nearest_obstacle([[0.5, np.nan]]), ValueError,
+         "row 0: nan"),
+        ("is_observed inf", lambda: mm.DistanceField(yaml).is_observed([[1, 1, 0], [np.inf, 0, 0]]), ValueError,
+         "row 1: inf"),
+        # options that change nothing
+        ("purge with nothing to purge", lambda: mm.split_and_merge(angles, np.full(181, 3.0), purge="after-merge",
+                                                                  min_points=0, min_length=0),
+         ValueError, "purge has no effect with min_points 0 and min_length 0"),
+        ("purge without merging", lambda: mm.split_and_merge(angles, np.full(181, 3.0), purge="before-merge",
+                                                            angle_threshold=0),
+         ValueError, "purge has no effect with angle_threshold 0"),
+        ("incremental 2D field", lambda: mm.DistanceField(yaml, incremental=True), ValueError,
+         "incremental has no effect"),
+        # files the readers would refuse
+        ("PCD of no points", lambda: mm.write_pcd(tmp / "e.pcd", np.zeros((0, 3))), ValueError, "0 points"),
+        # exception types
+        ("DistanceField(123)", lambda: mm.DistanceField(123), TypeError, "got int"),
+        ("height map empty frame", lambda: mm.HeightMap(map_size=64).add_frame(np.zeros((0, 3)), I4), ValueError,
+         "0 points"),
+        # messages naming the parameter
+        ("TUM stamp inf", lambda: mm.write_trajectory(tmp / "t.txt", three, stamps=[0, 1, math.inf], format="tum"),
+         ValueError, "stamps must be finite"),
+    ]
+
+
+@pytest.mark.parametrize("index", range(18))
+def test_sixth_pass_refusals(tmp_path, index):
+    name, call, error, needle = refusals6(tmp_path)[index]
+    with pytest.raises(error) as e:
+        call()
+    assert needle in str(e.value), (name, str(e.value))
+    assert not (tmp_path / "t.txt").exists() and not (tmp_path / "e.pcd").exists(), name
+    if name == "TUM stamp inf":
+        assert not str(e.value).startswith("poses_"), str(e.value)
+
+
+def test_sixth_pass_limits_are_accepted(tmp_path):
+    """The bounds themselves and the defaults still work: the refusals above are not blanket."""
+    pts = np.array([[1.0, 0.0, 0.0], [2.0, 1.0, 0.5]], np.float32)
+    odo = mm.LidarOdometry()
+    with pytest.raises(ValueError):
+        odo.last_result
+    (tmp_path / "rings").mkdir()
+    ring = ring_folder(tmp_path / "rings")
+    odo.register_frame(np.load(ring / "000.npy"))
+    assert odo.last_result["points_in"] == 400
+    odo.reset()
+    with pytest.raises(ValueError):
+        odo.last_result
+    # 90 and 360 degrees themselves, converted as the CLI does; an oracle for the rotation
+    t = mm.camera_to_map(1.5, 90 * math.pi / 180, yaw=-360 * math.pi / 180)
+    np.testing.assert_allclose(t[:3, 2], [0, 0, -1], atol=1e-12)  # optical axis straight down
+    assert t[2, 3] == 1.5
+    angles = np.linspace(-1.5, 1.5, 181)
+    r = np.full(181, 3.0)
+    r[0] = 3e38  # within float32: a (far) point, not an error
+    assert len(mm.split_and_merge(angles, r)["start"]) == 1
+    arc = np.full(181, 3.0)
+    np.testing.assert_array_equal(mm.split_and_merge(angles, arc, purge="before-merge")["start"],
+                                  mm.split_and_merge(angles, arc)["start"])
+    assert "9 nodes, 8 leaves" in repr(mm.octree(pts, max_points=1, min_cell_size=0.0))  # one split
+    yaml = small_map(tmp_path)
+    f = mm.DistanceField(yaml)
+    d, _ = f.query([[1.0, 1.0, 0.0]])  # centre of the 2 m box: 0.9 m from the border cells' centres
+    assert d[0] == pytest.approx(0.9, abs=1e-6)
+    assert mm.DistanceField(pts, resolution=0.1, incremental=True).dimensions == 3
+    mm.write_pcd(tmp_path / "one.pcd", pts[:1])
+    assert mm.read_points(tmp_path / "one.pcd").shape == (1, 4)
+
+
+def test_pcd_header_warning_as_the_cli_prints_it(tmp_path):
+    p = tmp_path / "w0.pcd"
+    pts = np.arange(30, dtype=np.float32).reshape(10, 3)
+    p.write_bytes(b"VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 0\nHEIGHT 0\n"
+                  b"VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 10\nDATA binary\n" + pts.tobytes())
+    for read in (mm.read_points, mm.read_cloud):
+        with pytest.warns(UserWarning, match="header says WIDTH 0 HEIGHT 0 but POINTS 10") as w:
+            read(p)
+        assert len(w) == 1
+    with pytest.warns(UserWarning):
+        np.testing.assert_array_equal(mm.read_points(p)[:, :3], pts)
+    assert mm.cloud_info(p)["warnings"] == [str(w[0].message)]
+

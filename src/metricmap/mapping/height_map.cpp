@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "metricmap/common/format_number.h"
 #include "metricmap/common/rigid_transform.h"
 #include "metricmap/detail/fast_floor.h"
 #include "metricmap/exceptions.h"
@@ -101,6 +102,15 @@ Eigen::Isometry3d cameraToMap(double height, double pitch_rad, double yaw_rad) {
       throw std::invalid_argument(std::string("camera pose: ") + name + " is not finite");
   if (std::abs(height) > kMaxTranslation)
     throw std::invalid_argument("camera pose: height beyond 1e6 m");
+  // The CLI's --pitch-deg and --yaw-deg bounds (+-90 and +-360 degrees), with a rounding margin
+  // for degrees converted to radians.
+  constexpr double kHalfPi = M_PI / 2.0, kTwoPi = 2.0 * M_PI, kMargin = 1.0 + 1e-12;
+  if (std::abs(pitch_rad) > kHalfPi * kMargin)
+    throw std::invalid_argument("camera pose: pitch " + formatNumber(pitch_rad) +
+                                " rad is not within [-pi/2, pi/2] (-90 to 90 degrees)");
+  if (std::abs(yaw_rad) > kTwoPi * kMargin)
+    throw std::invalid_argument("camera pose: yaw " + formatNumber(yaw_rad) +
+                                " rad is not within [-2 pi, 2 pi] (-360 to 360 degrees)");
   Eigen::Matrix3d level;  // optical (x right, y down, z forward) -> map (x right, y forward, z up)
   level << 1, 0, 0, 0, 0, 1, 0, -1, 0;
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
