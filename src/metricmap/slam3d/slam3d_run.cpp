@@ -44,6 +44,7 @@ Slam3DRun runSlam3D(ScanSource& source, const Slam3DRunOptions& options,
   std::unique_ptr<LidarOdometry> odometry;
   bool deskew = false;
   bool stamps = true;
+  std::vector<Eigen::Isometry3d> odometry_poses;
   for (std::size_t k = 0; k < run.frames.size(); ++k) {
     auto t = Clock::now();
     Scan scan = source.scan(run.frames[k]);
@@ -75,7 +76,7 @@ Slam3DRun runSlam3D(ScanSource& source, const Slam3DRunOptions& options,
     t = Clock::now();
     run.slam->addScan(scan.points, r.pose);
     run.slam_seconds += since(t);
-    run.odometry.poses.push_back(r.pose);
+    odometry_poses.push_back(r.pose);
     if (std::isfinite(scan.stamp))
       run.odometry.stamps.push_back(scan.stamp);
     else
@@ -87,7 +88,18 @@ Slam3DRun runSlam3D(ScanSource& source, const Slam3DRunOptions& options,
   run.slam_seconds += since(t);
   if (!stamps) run.odometry.stamps.clear();
   run.trajectory.stamps = run.odometry.stamps;
-  run.trajectory.poses = run.slam->poses();
+  // Output convention: A P A^-1 with A = sensor -> base where the source's poses are the
+  // base's (KITTI's camera 0); map poses A P (the sensor in the frame of the first base).
+  const SourceInfo& info = source.info();
+  Eigen::Isometry3d a = Eigen::Isometry3d::Identity();
+  if (info.conventions.poses_of_base) a = info.sensor_to_base;
+  Eigen::Isometry3d a_inv;
+  a_inv.matrix() = a.matrix().inverse();
+  for (const Eigen::Isometry3d& p : odometry_poses) run.odometry.poses.push_back(a * p * a_inv);
+  for (const Eigen::Isometry3d& p : run.slam->poses()) {
+    run.trajectory.poses.push_back(a * p * a_inv);
+    run.map_poses.push_back(a * p);
+  }
   return run;
 }
 

@@ -32,11 +32,15 @@ using Slam3DProgress = std::function<void(std::size_t, std::size_t, const Slam3D
 /// \brief A finished run.
 struct Slam3DRun {
   std::unique_ptr<Slam3D> slam;
-  /// \brief The optimised sensor poses (the first scan's sensor frame is the world), with
-  /// stamps when every scan has one.
+  /// \brief The optimised poses in the convention of the source's pose files (as runOdometry:
+  /// KITTI's camera 0 in the frame of camera 0 of the first frame, otherwise the sensor in the
+  /// frame of the first scan), with stamps when every scan has one.
   Trajectory trajectory;
-  /// \brief The odometry's poses alone, same frames.
+  /// \brief The odometry's poses alone, same convention.
   Trajectory odometry;
+  /// \brief Sensor -> map world poses of the nodes for SequenceMapper (the map's world of
+  /// mapConvention: KITTI's camera 0 of the first frame, otherwise the first sensor).
+  std::vector<Eigen::Isometry3d> map_poses;
   std::vector<std::size_t> frames;      ///< source index of each node
   LidarOdometryConfig odometry_config;  ///< as used (after the sensor profile)
   double read_seconds = 0.0;            ///< reading scans
