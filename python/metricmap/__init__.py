@@ -1,6 +1,6 @@
 """metricmap: metric maps from range data — occupancy grids, adaptive octrees, Split & Merge
 lines, depth images to height-binned maps, 3D log-odds maps, LiDAR odometry over scan sources,
-maps of sequences, 2D SLAM, pose graphs and trajectory evaluation — over numpy.
+maps of sequences, 2D SLAM, 3D LiDAR SLAM, pose graphs and trajectory evaluation — over numpy.
 
 Every function takes points as (N, 3) or (N, 4) arrays (float32 read in place when
 C-contiguous, anything else converted once) and returns numpy arrays; see docs/PYTHON.md.
@@ -24,6 +24,8 @@ from ._metricmap import (  # noqa: F401
     SequenceMapper,
     Slam2D,
     Slam2DConfig,
+    Slam3D,
+    Slam3DConfig,
     __version__,
     bin_points,
     camera_to_map,
@@ -46,6 +48,7 @@ from ._metricmap import (  # noqa: F401
     relation_error,
     run_odometry,
     run_slam2d,
+    run_slam3d,
     sensor_profile,
     slam2d_parameters,
     split_and_merge,
@@ -73,6 +76,8 @@ __all__ = [
     "SequenceMapper",
     "Slam2D",
     "Slam2DConfig",
+    "Slam3D",
+    "Slam3DConfig",
     "__version__",
     "bin_points",
     "camera_to_map",
@@ -96,6 +101,7 @@ __all__ = [
     "relation_error",
     "run_odometry",
     "run_slam2d",
+    "run_slam3d",
     "sensor_profile",
     "slam2d_parameters",
     "split_and_merge",
