@@ -21,6 +21,7 @@ void addOccupancyCommand(CLI::App& app);
 void addEvaluateCommand(CLI::App& app);
 void addPoseGraphCommand(CLI::App& app);
 void addSlam2DCommand(CLI::App& app);
+void addSlam3DCommand(CLI::App& app);
 void addLocalizeCommand(CLI::App& app);
 void addDistanceCommand(CLI::App& app);
 

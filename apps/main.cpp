@@ -85,6 +85,7 @@ int main(int argc, char** argv) {
   metricmap::cli::addEvaluateCommand(app);
   metricmap::cli::addPoseGraphCommand(app);
   metricmap::cli::addSlam2DCommand(app);
+  metricmap::cli::addSlam3DCommand(app);
   metricmap::cli::addLocalizeCommand(app);
   metricmap::cli::addDistanceCommand(app);
   if (argc > 1 && argv[1][0] != '-') {

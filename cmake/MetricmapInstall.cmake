@@ -5,7 +5,7 @@ include(CMakePackageConfigHelpers)
 
 set(config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/metricmap)
 # One export set per component, so that the package config loads only the requested ones.
-foreach(part core io mapping sequence posegraph slam distance localization)
+foreach(part core io mapping sequence posegraph slam slam3d distance localization)
   install(TARGETS metricmap_${part} EXPORT metricmap-${part}Targets
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}

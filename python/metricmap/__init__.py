@@ -1,7 +1,7 @@
 """metricmap: metric maps from range data — occupancy grids, adaptive octrees, Split & Merge
 lines, depth images to height-binned maps, 3D log-odds maps, LiDAR odometry over scan sources,
-maps of sequences, 2D SLAM, localisation in saved maps, distance fields, pose graphs and
-trajectory evaluation — over numpy.
+maps of sequences, 2D SLAM, 3D LiDAR SLAM, localisation in saved maps, distance fields, pose
+graphs and trajectory evaluation — over numpy.
 
 Every function takes points as (N, 3) or (N, 4) arrays (float32 read in place when
 C-contiguous, anything else converted once) and returns numpy arrays; see docs/PYTHON.md.
@@ -29,6 +29,8 @@ from ._metricmap import (  # noqa: F401
     SequenceMapper,
     Slam2D,
     Slam2DConfig,
+    Slam3D,
+    Slam3DConfig,
     __version__,
     bin_points,
     camera_to_map,
@@ -54,6 +56,7 @@ from ._metricmap import (  # noqa: F401
     run_localize2d,
     run_odometry,
     run_slam2d,
+    run_slam3d,
     sensor_profile,
     slam2d_parameters,
     split_and_merge,
@@ -85,6 +88,8 @@ __all__ = [
     "SequenceMapper",
     "Slam2D",
     "Slam2DConfig",
+    "Slam3D",
+    "Slam3DConfig",
     "__version__",
     "bin_points",
     "camera_to_map",
@@ -111,6 +116,7 @@ __all__ = [
     "run_localize2d",
     "run_odometry",
     "run_slam2d",
+    "run_slam3d",
     "sensor_profile",
     "slam2d_parameters",
     "split_and_merge",

@@ -527,6 +527,62 @@ def run_slam2d(
     *,
     progress: Optional[_Progress] = None,
 ) -> Slam2D: ...
+class Slam3DConfig:
+    def __init__(self, **kwargs: Any) -> None: ...
+    min_range: float
+    max_range: float
+    voxel: float
+    local_window: int
+    local_voxel: float
+    sc_rings: int
+    sc_sectors: int
+    sc_max_radius: float
+    sc_height_offset: float
+    sc_candidates: int
+    sc_max_distance: float
+    loop_min_travel: float
+    loop_radius: float
+    loop_every: int
+    loop_cooldown: int
+    verify_coarse_threshold: float
+    verify_fine_threshold: float
+    verify_overlap_distance: float
+    verify_min_overlap: float
+    verify_min_structure_overlap: float
+    verify_max_correction: float
+    odometry_sigma_m: float
+    odometry_sigma_deg: float
+    loop_sigma_m: float
+    loop_sigma_deg: float
+    optimize_every: int
+    max_iterations: int
+
+class Slam3D:
+    def __init__(self, config: Optional[Slam3DConfig] = None) -> None: ...
+    def add_scan(self, points: npt.ArrayLike, odometry_pose: npt.ArrayLike) -> Dict[str, Any]: ...
+    def finish(self) -> Dict[str, Any]: ...
+    @property
+    def poses(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def odometry_poses(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def loops(self) -> List[Dict[str, Any]]: ...
+    @property
+    def verified_loops(self) -> int: ...
+    @property
+    def timing(self) -> Dict[str, Any]: ...
+    @property
+    def bytes(self) -> int: ...
+    def __len__(self) -> int: ...
+    def local_map(self, node: int) -> npt.NDArray[np.float32]: ...
+
+def run_slam3d(
+    source: Union[ScanSource, _StrPath],
+    frames: Optional[Iterable[int]] = None,
+    config: Optional[Slam3DConfig] = None,
+    *,
+    progress: Optional[_Progress] = None,
+) -> Dict[str, Any]: ...
 def read_g2o(path: _StrPath) -> PoseGraph: ...
 def read_trajectory(
     path: _StrPath, format: str = "auto"

@@ -18,6 +18,7 @@ void initOdometry(py::module_& m);
 void initSequence(py::module_& m);
 void initPoseGraph(py::module_& m);
 void initSlam(py::module_& m);
+void initSlam3D(py::module_& m);
 void initEvaluation(py::module_& m);
 }  // namespace metricmap::python
 
@@ -40,5 +41,6 @@ PYBIND11_MODULE(_metricmap, m) {
   initSequence(m);
   initPoseGraph(m);
   initSlam(m);
+  initSlam3D(m);
   initEvaluation(m);
 }

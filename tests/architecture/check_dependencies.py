@@ -27,7 +27,7 @@ LAYERS = [
     ("sources", ["datasets"]),
     ("algorithms", ["grid", "octree", "lines", "camera", "registration", "occupancy", "mapping",
                     "posegraph", "slam", "evaluation", "distance", "localization"]),
-    ("pipelines", ["sequence", "distributed"]),
+    ("pipelines", ["sequence", "distributed", "slam3d"]),
     ("drawing", ["viz"]),
 ]
 
@@ -41,6 +41,7 @@ SAME_LAYER = {
     "localization": {"slam", "mapping", "occupancy", "registration", "posegraph", "evaluation",
                      "distance", "grid"},
     "distributed": {"sequence"},
+    "slam3d": {"sequence"},
 }
 
 # The CMake library each folder's sources are built into.
@@ -54,7 +55,7 @@ LIBRARIES = {
     "sequence": "metricmap_sequence", "posegraph": "metricmap_posegraph",
     "slam": "metricmap_slam", "distance": "metricmap_distance",
     "localization": "metricmap_localization", "viz": "metricmap_viz",
-    "distributed": "metricmap_mpi",
+    "distributed": "metricmap_mpi", "slam3d": "metricmap_slam3d",
 }
 
 # Files built into another library than their folder's, and why.
