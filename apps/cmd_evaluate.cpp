@@ -20,6 +20,7 @@ struct EvaluateOptions {
   std::string estimate, reference, relations, odometry, align = "rigid", format = "table";
   std::string est_format = "auto", ref_format = "auto";
   double max_time_diff = 0.01;
+  StepFailureLimits steps;
   bool per_frame = false;
 };
 
@@ -36,6 +37,7 @@ std::string runReference(const EvaluateOptions& o, const CLI::App& app) {
   EvaluationConfig config;
   config.alignment = parseAlignmentMode(o.align);
   config.max_time_diff = o.max_time_diff;
+  config.steps = o.steps;
   TrajectoryEvaluation ev;
   try {
     ev = evaluateTrajectory(est.trajectory, ref.trajectory, config);
@@ -110,6 +112,17 @@ void addEvaluateCommand(CLI::App& app) {
          "Largest stamp difference (s) pairing poses by time or finding a relation's poses")
       ->check(kFiniteNonNegative)
       ->capture_default_str();
+  sub->add_option(
+         "--step-max-m", o->steps.max_translation,
+         "A step (pose i to i + 1) whose RPE translation exceeds this (m) counts as failed")
+      ->check(kFinitePositive)
+      ->capture_default_str()
+      ->excludes(rel);
+  sub->add_option("--step-max-deg", o->steps.max_rotation_deg,
+                  "A step whose RPE rotation exceeds this (deg) counts as failed")
+      ->check(kFinitePositive)
+      ->capture_default_str()
+      ->excludes(rel);
   sub->add_flag("--per-frame", o->per_frame, "Also print the RPE of every frame (table format)");
   addFormatOption(*sub, o->format, {"table", "json"});
   sub->callback([o, sub] {

@@ -101,6 +101,12 @@ std::string referenceReport(const LoadedTrajectory& est, const LoadedTrajectory&
                   {"per_frame",
                    {{"translation_m", ev.rpe.translation},
                     {"rotation_deg", ev.rpe.rotation_deg}}}}},
+                {"failed_steps",
+                 {{"max_translation_m", ev.steps.limits.max_translation},
+                  {"max_rotation_deg", ev.steps.limits.max_rotation_deg},
+                  {"steps", ev.steps.steps},
+                  {"count", ev.steps.failed.size()},
+                  {"failed_from_pose", ev.steps.failed}}},
                 {"kitti_drift",
                  {{"path_length_m", d.path_length},
                   {"step_frames", config.drift.step},
@@ -123,7 +129,10 @@ std::string referenceReport(const LoadedTrajectory& est, const LoadedTrajectory&
   addStatsRow(stats, "ate_rotation_deg", ev.ate.rotation_stats);
   addStatsRow(stats, "rpe_translation_m", ev.rpe.translation_stats);
   addStatsRow(stats, "rpe_rotation_deg", ev.rpe.rotation_stats);
-  out += stats.render(TableStyle::Aligned) + "\nKITTI drift (devkit: 100-800 m segments every 10 " +
+  out += stats.render(TableStyle::Aligned) + "failed steps (RPE > " +
+         num(ev.steps.limits.max_translation) + " m or > " + num(ev.steps.limits.max_rotation_deg) +
+         " deg): " + std::to_string(ev.steps.failed.size()) + " of " +
+         std::to_string(ev.steps.steps) + "\nKITTI drift (devkit: 100-800 m segments every 10 " +
          "frames, estimate as given), reference path " + num(d.path_length) + " m: ";
   if (d.segments == 0) {
     out += "no segment fits (the path is shorter than the shortest segment)\n";

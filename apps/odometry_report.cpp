@@ -90,6 +90,15 @@ std::string odometryReport(const std::string& format, const std::string& profile
       j["rpe_per_frame"] = {{"translation_m", statsJson(r.rpe->translation_stats)},
                             {"rotation_deg", statsJson(r.rpe->rotation_stats)}};
     }
+    j["failed_steps"] = nullptr;
+    if (r.failed_steps) {
+      const StepFailures& s = *r.failed_steps;
+      j["failed_steps"] = {{"max_translation_m", s.limits.max_translation},
+                           {"max_rotation_deg", s.limits.max_rotation_deg},
+                           {"steps", s.steps},
+                           {"count", s.failed.size()},
+                           {"failed_from_pose", s.failed}};
+    }
     return j.dump(2) + "\n";
   }
   std::string report = renderTable(tab, format);
@@ -107,6 +116,12 @@ std::string odometryReport(const std::string& format, const std::string& profile
                   "difference from %s per frame: translation median %.4f m, max %.4f m, "
                   "rmse %.4f m; rotation median %.3f deg, max %.3f deg\n",
                   info.reference_path.c_str(), t.median, t.max, t.rmse, a.median, a.max);
+    report += line;
+  }
+  if (r.failed_steps) {
+    const StepFailures& s = *r.failed_steps;
+    std::snprintf(line, sizeof line, "failed steps (off by > %g m or > %g deg): %zu of %zu\n",
+                  s.limits.max_translation, s.limits.max_rotation_deg, s.failed.size(), s.steps);
     report += line;
   }
   std::snprintf(line, sizeof line,

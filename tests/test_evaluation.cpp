@@ -15,6 +15,7 @@
 #include "metricmap/evaluation/relation_error.h"
 #include "metricmap/evaluation/relative_error.h"
 #include "metricmap/evaluation/rotation_angle.h"
+#include "metricmap/evaluation/step_failures.h"
 #include "metricmap/evaluation/trajectory_evaluation.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/trajectory.h"
@@ -234,6 +235,34 @@ TEST(Evaluation, RpeByHand) {
   EXPECT_NEAR(e.translation[1], 0.1, 1e-12);
   EXPECT_NEAR(e.rotation_deg[1], 0.0, 1e-12);
   EXPECT_NEAR(e.translation_stats.rmse, std::sqrt(0.01 / 2), 1e-12);
+}
+
+TEST(Evaluation, StepFailuresByHand) {
+  // Reference: 1 m steps along x. Estimate: step 0 exact, step 1 turns 4 degrees, step 2 is
+  // 0.35 m too long, step 3 turns 2.9 degrees and is 0.29 m too short (within both limits).
+  std::vector<Eigen::Isometry3d> ref, est;
+  for (int i = 0; i < 5; ++i) ref.push_back(pose(Eigen::Matrix3d::Identity(), {double(i), 0, 0}));
+  est.push_back(Eigen::Isometry3d::Identity());
+  est.push_back(est.back() * pose(Eigen::Matrix3d::Identity(), {1, 0, 0}));
+  est.push_back(est.back() * pose(rotZ(4 * kDeg), {1, 0, 0}));
+  est.push_back(est.back() * pose(Eigen::Matrix3d::Identity(), {1.35, 0, 0}));
+  est.push_back(est.back() * pose(rotZ(2.9 * kDeg), {0.71, 0, 0}));
+  const metricmap::StepFailures f = metricmap::findStepFailures(metricmap::relativeError(est, ref));
+  EXPECT_EQ(f.steps, 4u);
+  EXPECT_EQ(f.failed, (std::vector<std::size_t>{1, 2}));
+  // Tighter limits catch step 3 too.
+  const metricmap::StepFailures tight =
+      metricmap::findStepFailures(metricmap::relativeError(est, ref), {0.2, 2.0});
+  EXPECT_EQ(tight.failed, (std::vector<std::size_t>{1, 2, 3}));
+  // evaluateTrajectory reports the same steps.
+  Trajectory te, tr;
+  te.poses = est;
+  tr.poses = ref;
+  metricmap::EvaluationConfig none;
+  none.alignment = AlignmentMode::None;  // collinear reference positions
+  EXPECT_EQ(metricmap::evaluateTrajectory(te, tr, none).steps.failed, f.failed);
+  EXPECT_THROW(metricmap::findStepFailures({}, {0.0, 3.0}), std::invalid_argument);
+  EXPECT_THROW(metricmap::findStepFailures({}, {0.3, std::nan("")}), std::invalid_argument);
 }
 
 TEST(Evaluation, SimilarityCopyAlignsToZero) {

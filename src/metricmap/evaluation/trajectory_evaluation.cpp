@@ -18,6 +18,7 @@ TrajectoryEvaluation evaluateTrajectory(const Trajectory& estimate, const Trajec
   const std::vector<Eigen::Isometry3d> aligned = applyAlignment(ev.alignment, est);
   ev.ate = absoluteError(aligned, ref);
   ev.rpe = relativeError(aligned, ref);
+  ev.steps = findStepFailures(ev.rpe, config.steps);
   ev.drift = kittiDrift(est, ref, config.drift);
   return ev;
 }

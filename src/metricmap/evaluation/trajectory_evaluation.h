@@ -9,6 +9,7 @@
 #include "metricmap/evaluation/kitti_drift.h"
 #include "metricmap/evaluation/pose_pairing.h"
 #include "metricmap/evaluation/relative_error.h"
+#include "metricmap/evaluation/step_failures.h"
 
 namespace metricmap {
 
@@ -17,6 +18,7 @@ struct EvaluationConfig {
   AlignmentMode alignment = AlignmentMode::Rigid;
   double max_time_diff = 0.01;  ///< seconds, pairing by stamps (evo's --t_max_diff default)
   KittiDriftConfig drift;
+  StepFailureLimits steps;  ///< when a step of the RPE counts as failed
 };
 
 /// \brief The metrics, over the paired poses.
@@ -27,11 +29,12 @@ struct TrajectoryEvaluation {
   AbsoluteError ate;    ///< of the aligned estimate
   RelativeError rpe;    ///< of the aligned estimate (a similarity scales its steps, as evo)
   KittiDrift drift;     ///< of the estimate as given (as the devkit)
+  StepFailures steps;   ///< the RPE's steps beyond config.steps
 };
 
 /// \brief Pair (pairPoses), align the paired positions (alignPositions), then ATE and RPE of
-/// the aligned estimate and KITTI drift of the paired estimate as given.
-/// \throws std::invalid_argument from pairPoses and alignPositions
+/// the aligned estimate, its failed steps and KITTI drift of the paired estimate as given.
+/// \throws std::invalid_argument from pairPoses, alignPositions and findStepFailures
 TrajectoryEvaluation evaluateTrajectory(const Trajectory& estimate, const Trajectory& reference,
                                         const EvaluationConfig& config = {});
 

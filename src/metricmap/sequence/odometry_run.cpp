@@ -127,6 +127,7 @@ OdometryRun runOdometry(ScanSource& source, const OdometryRunOptions& options,
     run.reference.poses = std::move(ref_out);
     run.reference.stamps = run.trajectory.stamps;
     run.rpe = relativeError(run.trajectory.poses, run.reference.poses);
+    run.failed_steps = findStepFailures(*run.rpe);
   }
   return run;
 }

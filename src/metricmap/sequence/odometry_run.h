@@ -16,6 +16,7 @@
 #include "metricmap/common/trajectory.h"
 #include "metricmap/datasets/scan_source.h"
 #include "metricmap/evaluation/relative_error.h"
+#include "metricmap/evaluation/step_failures.h"
 #include "metricmap/registration/lidar_odometry.h"
 #include "metricmap/sequence/sensor_profile.h"
 
@@ -70,6 +71,8 @@ struct OdometryRun {
   /// \brief Per-frame relative pose error against `reference` (evo_rpe, delta 1 frame: what
   /// `metricmap evaluate` prints for the written poses); empty without a reference.
   std::optional<RelativeError> rpe;
+  /// \brief The steps of `rpe` off by more than 0.3 m or 3 deg (StepFailureLimits' defaults).
+  std::optional<StepFailures> failed_steps;
 };
 
 /// \brief Called after each frame (progress).
