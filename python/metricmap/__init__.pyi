@@ -235,7 +235,7 @@ class SequenceMapper:
         max_height: Optional[float] = None,
         keep_global_cloud: bool = False,
         occupancy_2d_resolution: float = 0.0,
-        band_2d: Tuple[float, float] = (-0.5, 0.5),
+        band_2d: Optional[Tuple[float, float]] = None,
         occupancy_2d_max_range: Optional[float] = None,
     ) -> None: ...
     def build(
@@ -496,6 +496,8 @@ def split_and_merge(
     bearing_sigma: float = 0.0017453292519943296,
 ) -> Dict[str, Any]: ...
 def sensor_profile(points: npt.ArrayLike) -> Dict[str, float]: ...
+def set_memory_budget(size: Union[int, str]) -> None: ...
+def memory_budget() -> int: ...
 def open_scan_source(
     path: _StrPath,
     format: str = "auto",

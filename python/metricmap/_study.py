@@ -40,6 +40,9 @@ def compare(
         Each with ``cell_size`` (grid, metres), ``min_cell_size`` (octree, metres) and
         ``max_points`` (octree); default: the study's three (:data:`STUDY_CONFIGS`).
 
+    An empty ``paths`` or ``configs`` is a ValueError (``metricmap compare`` refuses an empty
+    selection too).
+
     Returns
     -------
     list of dict
@@ -52,7 +55,12 @@ def compare(
         raise TypeError(f"paths must be an iterable of paths, got the single path {paths!r}: "
                         "give [path]")
     keys = {"cell_size", "min_cell_size", "max_points"}
+    paths = list(paths)
+    if not paths:
+        raise ValueError("paths is empty: give at least one point cloud file")
     configs = [dict(c) for c in (STUDY_CONFIGS if configs is None else configs)]
+    if not configs:
+        raise ValueError("configs is empty: give at least one configuration, or None for the study's three")
     for c in configs:
         missing, unknown = keys - set(c), set(c) - keys
         if missing:

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string>
 
 #include "metricmap/exceptions.h"
 
@@ -170,7 +171,13 @@ void registerExceptions(py::module_& m) {
     } catch (const InputError& e) {
       PyErr_SetString(input_error, e.what());
     } catch (const CapacityError& e) {
-      PyErr_SetString(capacity_error, e.what());
+      // The library names the CLI's option; a Python user sets the budget by a function.
+      std::string text = e.what();
+      const std::string option = "--max-memory", function = "metricmap.set_memory_budget";
+      for (std::size_t at = text.find(option); at != std::string::npos;
+           at = text.find(option, at + function.size()))
+        text.replace(at, option.size(), function);
+      PyErr_SetString(capacity_error, text.c_str());
     }
   });
 }

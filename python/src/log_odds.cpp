@@ -14,10 +14,13 @@
 
 #include "arrays.h"
 #include "log_odds_object.h"
+#include "metricmap/common/float_range.h"
+#include "metricmap/common/format_number.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/occupancy/log_odds_map.h"
 #include "metricmap/occupancy/occupancy_export.h"
 #include "metricmap/occupancy/octomap_io.h"
+#include "metricmap/occupancy/octomap_quiet.h"
 #include "object_lock.h"
 
 namespace metricmap::python {
@@ -139,7 +142,7 @@ occupancy_threshold : float
             p.clamp_max = clamp_max;
             p.occupancy_threshold = occupancy_threshold;
             py::gil_scoped_release release;
-            return PyLogOddsMap{std::make_unique<LogOddsMap>(readOctomap(path.string(), p))};
+            return PyLogOddsMap{std::make_unique<LogOddsMap>(readOctomapQuietly(path.string(), p))};
           },
           py::arg("path"), py::arg("prob_hit") = 0.7, py::arg("prob_miss") = 0.4,
           py::arg("clamp_min") = 0.1192, py::arg("clamp_max") = 0.971,
@@ -152,6 +155,10 @@ occupancy_threshold : float
             ObjectGuard guard(self.mutex, "LogOddsMap");
             PointsArray p = pointsFromArray(points, "points", true);
             const Eigen::Vector3d o = vector3From(origin, "origin");
+            for (int i = 0; i < 3; ++i)  // named as given: 1e39 is not a float (it would read inf)
+              if (beyondFloatRange(o[i]))
+                throw py::value_error("origin[" + std::to_string(i) + "] " + formatNumber(o[i]) +
+                                      " is outside the single-precision range");
             if (std::isnan(max_range)) throw py::value_error("max_range must not be NaN");
             self.useMaxRange(max_range);
             ScanInsertReport r;
@@ -282,7 +289,7 @@ CapacityError
             ObjectGuard guard(self.mutex, "LogOddsMap");
             try {
               py::gil_scoped_release release;
-              writeOctomap(*self.map, path.string());
+              writeOctomapQuietly(*self.map, path.string());
             } catch (const std::invalid_argument&) {
               throw;
             } catch (const CapacityError&) {
@@ -370,7 +377,7 @@ ValueError
           py::is_operator())
       .def("__repr__", [](const PyLogOddsMap& self) {
         ObjectGuard guard(self.mutex, "LogOddsMap");
-        return "<metricmap.LogOddsMap resolution " + std::to_string(self.map->resolution()) + ", " +
+        return "<metricmap.LogOddsMap resolution " + formatNumber(self.map->resolution()) + ", " +
                std::to_string(self.map->knownVoxels()) + " known voxels>";
       });
 }

@@ -13,6 +13,7 @@ void initHeightMap(py::module_& m);
 void initLines(py::module_& m);
 void initLocalization(py::module_& m);
 void initLogOdds(py::module_& m);
+void initMemory(py::module_& m);
 void initOctree(py::module_& m);
 void initOdometry(py::module_& m);
 void initSequence(py::module_& m);
@@ -27,6 +28,7 @@ PYBIND11_MODULE(_metricmap, m) {
   m.doc() = "metricmap: metric maps from range data (compiled core; import metricmap).";
   m.attr("__version__") = METRICMAP_VERSION_STRING;
   registerExceptions(m);
+  initMemory(m);
   initCloudIo(m);
   initGrid(m);
   initOctree(m);

@@ -95,6 +95,13 @@ Eigen::Isometry3d spatial(const Pose2D& p) {
 std::vector<std::size_t> framesFrom(const py::object& obj, const char* name) {
   std::vector<std::size_t> out;
   if (obj.is_none()) return out;
+  if (py::isinstance(obj, py::module_::import("collections.abc").attr("Set"))) {
+    if (py::len(obj) == 0)
+      throw py::value_error(std::string(name) +
+                            " is empty: nothing to process (None selects every scan)");
+    throw py::type_error(std::string(name) +
+                         " must be ordered (a set has no order): give e.g. sorted(" + name + ")");
+  }
   py::object seq = obj;
   // An iterator or generator is read once into a list; numpy would see one object.
   if (!py::isinstance<py::array>(obj) && !py::hasattr(obj, "__len__") &&

@@ -299,6 +299,10 @@ ValueError
         const std::vector<std::string>& names = sensorProfileNames();
         if (profile && std::find(names.begin(), names.end(), *profile) == names.end())
           throw py::value_error("profile must be 'auto', 'kitti' or None, got '" + *profile + "'");
+        if (profile && max_range && min_range && voxel_size)
+          throw py::value_error(
+              "profile has no effect with max_range, min_range and voxel_size all given: it sets "
+              "only the values not given");
         const bool automatic =
             profile ? *profile == "auto" : info.conventions.default_profile == "auto";
         o.profile.max_range = automatic && !max_range;
@@ -346,7 +350,8 @@ frames : sequence of int, optional
     Scan indices, strictly increasing (default: every scan).
 profile : {'auto', 'kitti'}, optional
     Range window and voxel: 'kitti' (100 m, 3 m, 1 m voxel) or 'auto' (from the first scan's
-    ranges). Default: 'kitti' for a KITTI source, 'auto' otherwise.
+    ranges). Default: 'kitti' for a KITTI source, 'auto' otherwise. Giving it with all three
+    of max_range, min_range and voxel_size is a ValueError (it would set nothing).
 max_range, min_range, voxel_size : float, optional
     Metres; given values replace the profile's.
 deskew : {'auto', 'off', 'azimuth'}
@@ -390,7 +395,7 @@ XZ plane of camera 0, up -y; otherwise XY, up +z).
                        double min_range, std::optional<double> max_range, double voxel,
                        std::optional<double> min_height, std::optional<double> max_height,
                        bool keep_global_cloud, double occupancy_2d_resolution,
-                       std::pair<double, double> band_2d,
+                       std::optional<std::pair<double, double>> band_2d,
                        std::optional<double> occupancy_2d_max_range) {
              auto p = std::make_unique<PyMapper>();
              PySource& s = sourceFrom(source, p->source_object);
@@ -411,9 +416,19 @@ XZ plane of camera 0, up -y; otherwise XY, up +z).
                Occupancy2DConfig g;
                g.params.resolution = occupancy_2d_resolution;
                if (occupancy_2d_max_range) g.params.max_range = *occupancy_2d_max_range;
-               g.band_min = band_2d.first;
-               g.band_max = band_2d.second;
+               if (band_2d) {
+                 g.band_min = band_2d->first;
+                 g.band_max = band_2d->second;
+               }
                c.occupancy_2d = g;
+             } else {  // no 2D grid: its options would change nothing
+               for (auto [given, name] :
+                    {std::pair{band_2d.has_value(), "band_2d"},
+                     std::pair{occupancy_2d_max_range.has_value(), "occupancy_2d_max_range"}})
+                 if (given)
+                   throw py::value_error(std::string(name) +
+                                         " has no effect without occupancy_2d_resolution > 0: "
+                                         "there is no 2D log-odds grid");
              }
              p->mapper = std::make_unique<SequenceMapper>(*s.source, c);
              return p;
@@ -422,8 +437,7 @@ XZ plane of camera 0, up -y; otherwise XY, up +z).
            py::arg("min_range") = 0.0, py::arg("max_range") = py::none(), py::arg("voxel") = 0.0,
            py::arg("min_height") = py::none(), py::arg("max_height") = py::none(),
            py::arg("keep_global_cloud") = false, py::arg("occupancy_2d_resolution") = 0.0,
-           py::arg("band_2d") = std::pair<double, double>(-0.5, 0.5),
-           py::arg("occupancy_2d_max_range") = py::none(),
+           py::arg("band_2d") = py::none(), py::arg("occupancy_2d_max_range") = py::none(),
            R"doc(
 Parameters
 ----------
@@ -442,10 +456,12 @@ keep_global_cloud : bool
     Accumulate the scans in the world (:meth:`global_cloud`).
 occupancy_2d_resolution : float
     Cell of a 2D log-odds grid (m; 0: no grid).
-band_2d : (float, float)
-    Heights about the sensor (m) whose points the 2D grid casts (2D laser scans: all).
+band_2d : (float, float), optional
+    Heights about the sensor (m) whose points the 2D grid casts (None: (-0.5, 0.5); 2D laser
+    scans: all).
 occupancy_2d_max_range : float, optional
-    Beams longer are cut and mark free space only (m; None: no cut).
+    Beams longer are cut and mark free space only (m; None: no cut). It and band_2d need
+    occupancy_2d_resolution > 0 (a ValueError otherwise: they would change nothing).
 
 Raises
 ------

@@ -194,3 +194,112 @@ def test_pcd_header_warning_as_the_cli_prints_it(tmp_path):
         np.testing.assert_array_equal(mm.read_points(p)[:, :3], pts)
     assert mm.cloud_info(p)["warnings"] == [str(w[0].message)]
 
+
+def refusals6b(tmp):
+    """Sixth pass, objects and selections: empty or unordered selections, options without effect
+    on the scan runs, a map a file cannot hold, edges the g2o reader refuses, messages in the
+    shortest number form."""
+    (tmp / "rings").mkdir(exist_ok=True)
+    rings = str(ring_folder(tmp / "rings"))
+    pcd = tmp / "p.pcd"
+    mm.write_pcd(pcd, np.array([[1.0, 0.0, 0.0], [2.0, 1.0, 0.5]]))
+    graph = mm.PoseGraph(2)
+    graph.add_vertex(0, [0, 0, 0])
+    graph.add_vertex(1, [1, 0, 0])
+    return [
+        # empty or unordered selections
+        ("compare no configs", lambda: mm.compare([pcd], configs=[]), ValueError, "configs is empty"),
+        ("compare no paths", lambda: mm.compare([]), ValueError, "paths is empty"),
+        ("frames an empty set", lambda: mm.run_odometry(rings, frames=set()), ValueError, "frames is empty"),
+        ("frames a set", lambda: mm.run_odometry(rings, frames={0, 1}), TypeError,
+         "frames must be ordered (a set has no order)"),
+        ("mapper frames a set", lambda: mm.SequenceMapper(rings).build(np.stack([I4, I4]), frames={0, 1}), TypeError,
+         "a set has no order"),
+        # options without effect
+        ("profile with all three values", lambda: mm.run_odometry(rings, profile="kitti", max_range=50, min_range=1,
+                                                                 voxel_size=0.5),
+         ValueError, "profile has no effect with max_range, min_range and voxel_size all given"),
+        ("band_2d without a 2D grid", lambda: mm.SequenceMapper(rings, band_2d=(0, 1)), ValueError,
+         "band_2d has no effect without occupancy_2d_resolution"),
+        ("2D max range without a 2D grid", lambda: mm.SequenceMapper(rings, occupancy_2d_max_range=5), ValueError,
+         "occupancy_2d_max_range has no effect"),
+        # a map no OctoMap file can hold
+        ("log-odds resolution 5e-5", lambda: mm.LogOddsMap(5e-5), ValueError, "got 5e-05"),
+        ("log-odds resolution 2000", lambda: mm.LogOddsMap(2000.0), ValueError, "[0.0001, 1000]"),
+        ("log-odds resolution 1e39", lambda: mm.LogOddsMap(1e39), ValueError, "got 1e+39"),
+        # an edge the g2o reader would refuse
+        ("edge chi2 overflows", lambda: graph.add_edge(0, 1, [1.5, 0, 0], np.eye(3) * 1e300), ValueError,
+         "chi² at the vertices' current poses is not finite"),
+        # messages: the value given, in the shortest form
+        ("mapper min range above max", lambda: mm.SequenceMapper(rings, min_range=50, max_range=30), ValueError,
+         "min range 50 exceeds max range 30"),
+        ("mapper resolution -1", lambda: mm.SequenceMapper(rings, map_resolution=-1), ValueError, "got -1"),
+        ("mapper band order", lambda: mm.SequenceMapper(rings, occupancy_2d_resolution=0.1, band_2d=(1, 0.5)),
+         ValueError, "got 1,0.5"),
+        ("mapper voxel 1e39", lambda: mm.SequenceMapper(rings, voxel=1e39), ValueError, "voxel 1e+39"),
+        ("origin 1e39", lambda: mm.LogOddsMap(0.2).insert_point_cloud(np.array([[1.0, 0, 0]]), [0, 1e39, 0]),
+         ValueError, "origin[1] 1e+39"),
+        ("depth fx 1e-300", lambda: mm.depth_to_cloud(np.full((4, 4), 1000, np.uint16), 1e-300, 525, 2, 2, 0.001),
+         ValueError, "fx 1e-300"),
+    ]
+
+
+@pytest.mark.parametrize("index", range(18))
+def test_sixth_pass_selection_and_object_refusals(tmp_path, index):
+    name, call, error, needle = refusals6b(tmp_path)[index]
+    with pytest.raises(error) as e:
+        call()
+    assert needle in str(e.value), (name, str(e.value))
+    assert ".000000" not in str(e.value), (name, str(e.value))
+
+
+def test_sixth_pass_objects_at_their_limits(tmp_path, capfd):
+    """The accepted side of the rules above, and the file round trips they protect."""
+    for res in (1e-4, 1000.0):
+        assert mm.LogOddsMap(res).resolution == res
+    m = mm.LogOddsMap(0.25)
+    assert "resolution 0.25," in repr(m)
+    m.insert_point_cloud(np.array([[1.0, 0.0, 0.0]]), [0, 0, 0])
+    capfd.readouterr()
+    m.write(tmp_path / "a.bt")
+    back = mm.LogOddsMap.read(tmp_path / "a.bt")
+    out, err = capfd.readouterr()
+    assert out == "" and err == "", (out, err)  # liboctomap's chatter is muted
+    assert back.resolution == 0.25
+    np.testing.assert_allclose(back.extract_point_cloud()[0], m.extract_point_cloud()[0])
+    g = mm.PoseGraph(2)
+    g.add_vertex(0, [0, 0, 0])
+    g.add_vertex(1, [1, 0, 0])
+    g.add_edge(0, 1, [1.5, 0, 0], np.eye(3) * 1e3)  # chi² 0.25 x 1e3
+    assert g.chi2() == pytest.approx(250.0)
+    g.write(tmp_path / "g.g2o")
+    assert mm.read_g2o(tmp_path / "g.g2o").chi2() == pytest.approx(250.0)
+    (tmp_path / "rings").mkdir()
+    rings = str(ring_folder(tmp_path / "rings"))
+    run = mm.run_odometry(rings, frames=(k for k in [0, 1]), max_range=50, min_range=1, voxel_size=0.5)
+    assert list(run["frames"]) == [0, 1]
+    s = mm.SequenceMapper(rings, occupancy_2d_resolution=0.2, occupancy_2d_max_range=5, band_2d=(-1, 1))
+    s.build(np.stack([I4, I4]))
+    assert s.occupancy_2d() is not None
+
+
+def test_memory_budget_from_python(tmp_path):
+    before = mm.memory_budget()
+    try:
+        mm.set_memory_budget("64M")
+        assert mm.memory_budget() == 64 << 20
+        mm.set_memory_budget(1 << 30)
+        assert mm.memory_budget() == 1 << 30
+        for call in (lambda: mm.DistanceField(np.array([[0, 0, 0], [3000, 3000, 300.0]]), resolution=0.01),
+                     lambda: mm.HeightMap(map_size=200000)):
+            with pytest.raises(mm.CapacityError) as e:
+                call()
+            assert "metricmap.set_memory_budget" in str(e.value) and "--max-memory" not in str(e.value)
+            assert "1024 MiB" in str(e.value), str(e.value)
+        for bad, error in (("0", ValueError), (0, ValueError), (-5, ValueError), ("lots", ValueError),
+                           (1.5, TypeError), (True, TypeError)):
+            with pytest.raises(error):
+                mm.set_memory_budget(bad)
+        assert mm.memory_budget() == 1 << 30  # a refused value changes nothing
+    finally:
+        mm.set_memory_budget(before)

@@ -68,6 +68,7 @@ SPLIT_FILES = {
     "occupancy/octomap_export_use.cpp": ("metricmap_sequence", "liboctomap"),
     "occupancy/octomap_file_check.cpp": ("metricmap_sequence", "liboctomap"),
     "occupancy/octomap_io.cpp": ("metricmap_sequence", "liboctomap"),
+    "occupancy/octomap_quiet.cpp": ("metricmap_sequence", "wraps octomap_io.cpp"),
     "occupancy/scan_casting.cpp": ("metricmap_sequence", "casts scans of sources"),
     # What the viewer shows, computed without VTK so that tests and Python need no VTK.
     "viz/scene_content.cpp": ("metricmap_mapping", "no VTK"),

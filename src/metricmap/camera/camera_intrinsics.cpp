@@ -6,11 +6,14 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
 #include <nlohmann/json.hpp>
 
+#include "metricmap/common/float_range.h"
 #include "metricmap/common/format_number.h"
 #include "metricmap/common/parse_number.h"
 #include "metricmap/exceptions.h"
@@ -63,6 +66,13 @@ void validateIntrinsics(const CameraIntrinsics& k) {
        << k.cx << "," << k.cy;
     throw std::invalid_argument(os.str());
   }
+  // Points are float: a focal length outside the float range would turn every coordinate
+  // (x = (u - cx) z / fx) into inf, or 0.
+  for (auto [value, name] : {std::pair{k.fx, "fx"}, std::pair{k.fy, "fy"}})
+    if (beyondFloatRange(value) || belowFloatRange(value))
+      throw std::invalid_argument("intrinsics: " + std::string(name) + " " + formatNumber(value) +
+                                  " is outside the single-precision range (1.17549e-38 to "
+                                  "3.40282e+38)");
 }
 
 CameraIntrinsics parseIntrinsics(const std::string& text) {

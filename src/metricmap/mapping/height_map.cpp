@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "metricmap/common/format_number.h"
+#include "metricmap/common/memory_budget.h"
 #include "metricmap/common/rigid_transform.h"
 #include "metricmap/detail/fast_floor.h"
 #include "metricmap/exceptions.h"
@@ -29,14 +30,18 @@ HeightMap::HeightMap(const HeightMapParams& params) : params_(params) {
     }
   }
   const long double cells = static_cast<long double>(params.map_size) * params.map_size * bins();
-  const long double bytes = cells * sizeof(std::uint32_t);
-  if (bytes > static_cast<long double>(params.max_bytes)) {
-    std::ostringstream os;
-    os << "a " << params.map_size << " x " << params.map_size << " map with " << bins()
-       << " height bins needs " << static_cast<double>(bytes) / (1 << 20) << " MiB (limit "
-       << params.max_bytes / (1 << 20) << " MiB)";
-    throw CapacityError(os.str());
-  }
+  const std::string what = "a " + std::to_string(params.map_size) + " x " +
+                           std::to_string(params.map_size) + " map with " + std::to_string(bins()) +
+                           " height bins";
+  if (cells >= 0x1p62L)  // beyond any budget, and beyond what checkMemory counts exactly
+    throw CapacityError(what + " needs more than 2^64 bytes, more than the memory budget of " +
+                        std::to_string(memoryBudget() >> 20) + " MiB (--max-memory)");
+  checkMemory(static_cast<std::uint64_t>(cells), sizeof(std::uint32_t), what);
+  if (cells * sizeof(std::uint32_t) > static_cast<long double>(params.max_bytes))
+    throw CapacityError(what + " needs " +
+                        std::to_string(static_cast<std::uint64_t>(cells) * 4 >> 20) +
+                        " MiB, more than the height map's max_bytes of " +
+                        std::to_string(params.max_bytes >> 20) + " MiB");
   counts_.assign(static_cast<std::size_t>(cells), 0);
   stats_.bin_counts.assign(bins(), 0);
 }

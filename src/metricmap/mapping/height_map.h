@@ -73,8 +73,8 @@ class HeightMap {
 
 /// \brief Camera pose in the map frame from its height above the floor, its pitch (positive:
 /// looking down) and yaw (positive: turned left), for a camera optical frame (x right, y down,
-/// z forward). \throws std::invalid_argument naming a value that is not finite, a height
-/// beyond kMaxTranslation, a pitch outside [-pi/2, pi/2] or a yaw outside [-2 pi, 2 pi]
+/// z forward). \throws std::invalid_argument naming a value that is not finite, or a height
+/// beyond kMaxTranslation
 Eigen::Isometry3d cameraToMap(double height, double pitch_rad, double yaw_rad);
 
 /// \brief Floor-aligned pose from a floor plane n.p + d = 0 in the camera frame (|n| = 1, the

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "metricmap/occupancy/octomap_file_check.h"
+
 namespace metricmap {
 namespace {
 
@@ -28,7 +30,9 @@ const std::vector<LogOddsField>& logOddsFields() {
   };
   // A hit must raise a voxel's occupancy and a miss lower it, or the map says nothing.
   static const std::vector<LogOddsField> fields = {
-      field("resolution", "m", {0.0, kInf, true}, "voxel (cell) edge", &LogOddsParams::resolution),
+      // The cell edges a .bt/.ot file holds (its reader refuses others): a map is writable.
+      field("resolution", "m", {kOctomapMinResolution, kOctomapMaxResolution}, "voxel (cell) edge",
+            &LogOddsParams::resolution),
       field("prob_hit", "", {0.5, 1.0, true, true}, "P(occupied | hit), added at a beam's end",
             &LogOddsParams::prob_hit),
       field("prob_miss", "", {0.0, 0.5, true, true}, "P(occupied | miss), added along a beam",

@@ -155,6 +155,12 @@ std::size_t PoseGraph<PoseT, Dim>::addEdge(std::size_t from, std::size_t to,
   edge.information = information;
   edge.loop = loop;
   edges_.push_back(edge);
+  // The same rule as the g2o reader: an edge whose chi² overflows makes every cost infinite.
+  if (!std::isfinite(edgeChi2(edges_.size() - 1))) {
+    edges_.pop_back();
+    throw std::invalid_argument(
+        "the edge's chi² at the vertices' current poses is not finite (values too large)");
+  }
   return edges_.size() - 1;
 }
 

@@ -8,6 +8,8 @@
 
 #include <pcl/common/transforms.h>
 
+#include "metricmap/common/float_range.h"
+#include "metricmap/common/format_number.h"
 #include "metricmap/exceptions.h"
 
 namespace metricmap {
@@ -21,7 +23,7 @@ void require(bool ok, const std::string& message) {
   if (!ok) throw std::invalid_argument(message);
 }
 
-std::string str(double v) { return std::to_string(v); }
+std::string str(double v) { return formatNumber(v); }
 
 }  // namespace
 
@@ -42,6 +44,9 @@ void validateScanMapperConfig(const ScanMapperConfig& c) {
           "min range " + str(c.min_range) + " exceeds max range " + str(c.max_range));
   require(std::isfinite(c.voxel) && c.voxel >= 0.0,
           "voxel must be a finite number >= 0 (0: off), got " + str(c.voxel));
+  // The clouds are float: 1e39 would be an infinite voxel, 1e-300 a zero one.
+  require(!beyondFloatRange(c.voxel) && !belowFloatRange(c.voxel),
+          "voxel " + str(c.voxel) + " is outside the single-precision range");
   require(!std::isnan(c.min_height) && !std::isnan(c.max_height),
           "height band bounds must not be NaN");
   require(c.min_height <= c.max_height,
