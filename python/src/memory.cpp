@@ -22,7 +22,7 @@ void initMemory(py::module_& m) {
           const py::int_ n = size.cast<py::int_>();
           if (n < py::int_(1) || n > py::int_(UINT64_MAX))
             throw py::value_error("memory budget must be a positive number of bytes, got " +
-                                  std::string(py::str(n)));
+                                  py::repr(size).cast<std::string>());
           bytes = n.cast<std::uint64_t>();
         } else {
           throw py::type_error("memory budget must be an int (bytes) or a text like '2G', got " +

@@ -224,11 +224,11 @@ def refusals6b(tmp):
         ("2D max range without a 2D grid", lambda: mm.SequenceMapper(rings, occupancy_2d_max_range=5), ValueError,
          "occupancy_2d_max_range has no effect"),
         # a map no OctoMap file can hold
-        ("log-odds resolution 5e-5", lambda: mm.LogOddsMap(5e-5), ValueError, "got 5e-05"),
-        ("log-odds resolution 2000", lambda: mm.LogOddsMap(2000.0), ValueError, "[0.0001, 1000]"),
-        ("log-odds resolution 1e39", lambda: mm.LogOddsMap(1e39), ValueError, "got 1e+39"),
+        ("log-odds resolution 5e-5", lambda: mm.LogOddsMap(5e-5), ValueError, "must be in [0.0001, 1e3], got 5e-5"),
+        ("log-odds resolution 2000", lambda: mm.LogOddsMap(2000.0), ValueError, "got 2e3"),
+        ("log-odds resolution 1e39", lambda: mm.LogOddsMap(1e39), ValueError, "got 1e39"),
         # an edge the g2o reader would refuse
-        ("edge chi2 overflows", lambda: graph.add_edge(0, 1, [1.5, 0, 0], np.eye(3) * 1e300), ValueError,
+        ("edge chi2 overflows", lambda: graph.add_edge(0, 1, [1e5, 0, 0], np.eye(3) * 1e300), ValueError,
          "chi² at the vertices' current poses is not finite"),
         # messages: the value given, in the shortest form
         ("mapper min range above max", lambda: mm.SequenceMapper(rings, min_range=50, max_range=30), ValueError,

@@ -29,7 +29,7 @@ expect 2 "--pcd-format" -- "$MM" grid "$scan" --cell-size 1 --pcd-format text
 expect 2 "subcommand" -- "$MM"
 expect 2 "frobnicate" -- "$MM" frobnicate
 # The list of commands comes from the registered ones (view and occupancy included).
-expect 2 "view, occupancy, evaluate, posegraph, slam2d, localize, distance; see --help" -- "$MM" frobnicate
+expect 2 "view, occupancy, evaluate, posegraph, slam2d, slam3d, localize, distance; see --help" -- "$MM" frobnicate
 
 # Input errors: exit 1, the message names the file.
 milk=$DATA/pcl_test_pcd/milk.pcd

@@ -133,7 +133,7 @@ expect 2 "unknown SLAM parameter 'loop_min_scor' (did you mean loop_min_score?)"
   "$MM" slam2d "$tmp/s40.clf" --set loop_min_scor=0.5 --out-poses "$tmp/x.tum"
 expect 2 "--set: prob_hit must be in (0.5, 1)" -- \
   "$MM" slam2d "$tmp/s40.clf" --set prob_hit=2 --out-poses "$tmp/x.tum"
-expect 2 "--set: map_resolution must be finite and > 0, got -1" -- \
+expect 2 "--set: map_resolution must be in [0.0001, 1e3], got -1" -- \
   "$MM" slam2d "$tmp/s40.clf" --set map_resolution=-1 --out-poses "$tmp/x.tum"
 expect 2 "--set: weak_direction_min_gain: 'nan' is not a finite number" -- \
   "$MM" slam2d "$tmp/s40.clf" --set weak_direction_min_gain=nan --out-poses "$tmp/x.tum"
