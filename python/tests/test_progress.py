@@ -88,7 +88,9 @@ except KeyboardInterrupt:
 """
 
 
-def test_ctrl_c_stops_run_slam2d_within_half_a_second(data):
+def interrupted_run(data):
+    """Ctrl-C 1.5 s into run_slam2d over the whole Intel log, in a child: its last line and the
+    time the signal was sent."""
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in sys.path if p))
     child = subprocess.Popen([sys.executable, "-c", CHILD, str(data.joinpath(*INTEL))],
                              stdout=subprocess.PIPE, text=True, env=env)
@@ -98,9 +100,16 @@ def test_ctrl_c_stops_run_slam2d_within_half_a_second(data):
         sent = time.monotonic()
         child.send_signal(signal.SIGINT)
         line = child.stdout.readline().split()
-        child.wait(timeout=30)
+        child.wait(timeout=120)
     finally:
         child.kill()
+    return line, sent
+
+
+def test_ctrl_c_stops_run_slam2d_within_half_a_second(data):
+    line, sent = interrupted_run(data)
+    if line[0] != "interrupted":  # a machine busy enough to delay the child: once more
+        line, sent = interrupted_run(data)
     assert line[0] == "interrupted", line  # the whole log takes far longer than 1.5 s
     assert float(line[1]) - sent < 0.5
     assert float(line[2]) > 1.4
