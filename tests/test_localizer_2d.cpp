@@ -230,7 +230,7 @@ TEST(Localizer2DInitialPose, OutsideTheMapOrAHugeYawIsRefusedInsideIsAccepted) {
   map.cells.assign(800, kCellFree);
   EXPECT_NO_THROW(validateInitialPose(map, {-1.0, 3.0, 0.0}));
   EXPECT_NO_THROW(validateInitialPose(map, {3.0, 5.0, -1e6}));
-  const std::vector<Pose2D> bad = {{-1.01, 4.0, 0.0}, {3.01, 4.0, 0.0}, {0.0, 2.99, 0.0},
+  const std::vector<Pose2D> bad = {{-1.01, 4.0, 0.0}, {3.01, 4.0, 0.0},  {0.0, 2.99, 0.0},
                                    {0.0, 5.01, 0.0},  {1e300, 4.0, 0.0}, {0.0, 4.0, 1.000001e6},
                                    {0.0, 4.0, NAN}};
   for (const Pose2D& p : bad) {
