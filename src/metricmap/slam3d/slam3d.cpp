@@ -144,28 +144,9 @@ std::vector<Eigen::Vector3f> Slam3D::localMap(std::size_t i) const {
   return downsample(all, config_.local_voxel);
 }
 
-void Slam3D::search(std::size_t c, Slam3DFrameReport& report) {
-  auto t0 = Clock::now();
-  const std::vector<Eigen::Vector3f> local = localMap(c);
-  Node& node = nodes_[c];
-  node.descriptor = makeScanContext(local, sc_params_);
-  node.described = true;
-  timing_.descriptors += since(t0);
-  if (c % config_.loop_every != 0) return;
-  if (any_loop_ && c < last_loop_node_ + config_.loop_cooldown) return;
-  ++report.searched;
-  t0 = Clock::now();
-  // Eligible: described nodes far enough back along the path.
-  std::size_t eligible = 0;
-  while (eligible < c && node.travel - nodes_[eligible].travel >= config_.loop_min_travel)
-    ++eligible;
-  struct Candidate {
-    std::size_t j;
-    Eigen::Isometry3d guess;
-    const char* method;
-    double distance;
-  };
-  std::vector<Candidate> candidates;
+std::vector<Slam3D::LoopCandidate> Slam3D::loopCandidates(std::size_t c,
+                                                          std::size_t eligible) const {
+  std::vector<LoopCandidate> candidates;
   // Radius search around the current estimate: the nearest eligible node.
   if (config_.loop_radius > 0.0 && eligible > 0) {
     double best = config_.loop_radius;
@@ -182,15 +163,15 @@ void Slam3D::search(std::size_t c, Slam3DFrameReport& report) {
     std::vector<std::pair<float, std::size_t>> keys;
     keys.reserve(eligible);
     for (std::size_t j = 0; j < eligible; ++j)
-      keys.emplace_back((nodes_[j].descriptor.ring_key - node.descriptor.ring_key).squaredNorm(),
-                        j);
+      keys.emplace_back(
+          (nodes_[j].descriptor.ring_key - nodes_[c].descriptor.ring_key).squaredNorm(), j);
     const std::size_t n = std::min(keys.size(), config_.sc_candidates);
     std::partial_sort(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(n), keys.end());
     ScanContextMatch best;
     std::size_t best_j = eligible;
     for (std::size_t m = 0; m < n; ++m) {
       const ScanContextMatch match =
-          compareScanContexts(nodes_[keys[m].second].descriptor, node.descriptor);
+          compareScanContexts(nodes_[keys[m].second].descriptor, nodes_[c].descriptor);
       if (match.distance < best.distance) best = match, best_j = keys[m].second;
     }
     if (best_j < eligible && best.distance <= config_.sc_max_distance) {
@@ -199,12 +180,31 @@ void Slam3D::search(std::size_t c, Slam3DFrameReport& report) {
       candidates.push_back({best_j, guess, "descriptor", best.distance});
     }
   }
+  return candidates;
+}
+
+void Slam3D::search(std::size_t c, Slam3DFrameReport& report) {
+  auto t0 = Clock::now();
+  const std::vector<Eigen::Vector3f> local = localMap(c);
+  Node& node = nodes_[c];
+  node.descriptor = makeScanContext(local, sc_params_);
+  node.described = true;
+  timing_.descriptors += since(t0);
+  if (c % config_.loop_every != 0) return;
+  if (any_loop_ && c < last_loop_node_ + config_.loop_cooldown) return;
+  ++report.searched;
+  t0 = Clock::now();
+  // Eligible: described nodes far enough back along the path.
+  std::size_t eligible = 0;
+  while (eligible < c && node.travel - nodes_[eligible].travel >= config_.loop_min_travel)
+    ++eligible;
+  const std::vector<LoopCandidate> candidates = loopCandidates(c, eligible);
   const double searched = since(t0);
   timing_.search += searched;
   report.seconds_search += searched;
   if (candidates.empty()) return;
   t0 = Clock::now();
-  for (const Candidate& cand : candidates) {
+  for (const LoopCandidate& cand : candidates) {
     Slam3DLoop loop;
     loop.from = cand.j;
     loop.to = c;

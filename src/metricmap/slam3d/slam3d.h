@@ -95,7 +95,17 @@ class Slam3D {
     ScanContext descriptor;
     bool described = false;
   };
+  /// A node that may close a loop with the current one, and the relative pose to start from.
+  struct LoopCandidate {
+    std::size_t j;
+    Eigen::Isometry3d guess;
+    const char* method;
+    double distance;
+  };
   void search(std::size_t c, Slam3DFrameReport& report);
+  /// The candidates of node c among nodes [0, eligible): the nearest by position (radius
+  /// search), the nearest by descriptor (place recognition).
+  std::vector<LoopCandidate> loopCandidates(std::size_t c, std::size_t eligible) const;
   void optimizeGraph(Slam3DFrameReport& report);
 
   Slam3DConfig config_;
