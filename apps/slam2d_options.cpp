@@ -40,8 +40,7 @@ void applySettings(const CLI::App& app, const std::vector<std::string>& settings
     for (const auto& [field, option] : own)
       if (field == name && app.count(option) > 0)
         throw UsageError("--set " + name + " and " + option + " set the same parameter");
-    if (no_loops && (name.rfind("loop_", 0) == 0 || name.rfind("wide_", 0) == 0 ||
-                     name == "branch_and_bound_depth"))
+    if (no_loops && isLoopClosureParameter(name))
       throw UsageError("--set " + name + " has no effect with --no-loop-closure");
   }
   try {

@@ -412,8 +412,16 @@ lower-left corner, m), mode.
                            info.kind + " source of 3D scans");
         const std::vector<std::size_t> f = selectedFrames(frames, s.source->size());
         Slam2DConfig c = config ? *config : Slam2DConfig{};
-        if (!loop_closure)
+        if (!loop_closure) {
+          // As --no-loop-closure with --set: a loop parameter given has no effect.
+          const Slam2DConfig defaults;
+          for (const ParameterSpec& spec : slam2DParameterSchema())
+            if (isLoopClosureParameter(spec.name) &&
+                slam2DParameterValue(c, spec.name) != slam2DParameterValue(defaults, spec.name))
+              throw py::value_error("config." + spec.name +
+                                    " has no effect with loop_closure=False");
           c.loop_every_n_nodes = c.wide_every_n_nodes = static_cast<std::size_t>(-1);
+        }
         auto p = std::make_unique<PySlam>();
         {
           ObjectGuard guard(s.mutex, "ScanSource");

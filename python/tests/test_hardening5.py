@@ -3,11 +3,14 @@ nothing done, files the reader would refuse, poses and numbers beyond their boun
 then replaced. Each raises the documented exception with a message naming the value."""
 
 import math
+import pathlib
 
 import numpy as np
 import pytest
 
 import metricmap as mm
+
+INTEL = pathlib.Path(__file__).resolve().parents[2] / "data" / "radish_clf_raw" / "intel.clf.bz2"
 
 I4 = np.eye(4)
 
@@ -219,6 +222,9 @@ def refusals6b(tmp):
         ("profile with all three values", lambda: mm.run_odometry(rings, profile="kitti", max_range=50, min_range=1,
                                                                  voxel_size=0.5),
          ValueError, "profile has no effect with max_range, min_range and voxel_size all given"),
+        ("loop parameter without loop closure",
+         lambda: mm.run_slam2d(INTEL, config=mm.Slam2DConfig(loop_min_score=0.7), loop_closure=False),
+         ValueError, "config.loop_min_score has no effect with loop_closure=False"),
         ("band_2d without a 2D grid", lambda: mm.SequenceMapper(rings, band_2d=(0, 1)), ValueError,
          "band_2d has no effect without occupancy_2d_resolution"),
         ("2D max range without a 2D grid", lambda: mm.SequenceMapper(rings, occupancy_2d_max_range=5), ValueError,
@@ -244,7 +250,7 @@ def refusals6b(tmp):
     ]
 
 
-@pytest.mark.parametrize("index", range(18))
+@pytest.mark.parametrize("index", range(19))
 def test_sixth_pass_selection_and_object_refusals(tmp_path, index):
     name, call, error, needle = refusals6b(tmp_path)[index]
     with pytest.raises(error) as e:

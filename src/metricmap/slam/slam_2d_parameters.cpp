@@ -310,4 +310,9 @@ void setSlam2DParameterValue(Slam2DConfig& config, const std::string& name, doub
   }
 }
 
+bool isLoopClosureParameter(const std::string& name) {
+  return name.rfind("loop_", 0) == 0 || name.rfind("wide_", 0) == 0 ||
+         name == "branch_and_bound_depth";
+}
+
 }  // namespace metricmap

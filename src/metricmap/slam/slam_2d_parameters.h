@@ -38,6 +38,10 @@ void setSlam2DParameter(Slam2DConfig& config, const std::string& name, const std
 /// \throws std::invalid_argument for an unknown name
 double slam2DParameterValue(const Slam2DConfig& config, const std::string& name);
 
+/// \brief A parameter of the loop closure (loop_*, wide_*, branch_and_bound_depth): without loop
+/// closure it has no effect, and giving it is refused.
+bool isLoopClosureParameter(const std::string& name);
+
 /// \brief Set `name` to `value`, checked only for the field's kind (a switch 0 or 1, a count a
 /// whole number that fits): validateSlam2DConfig checks the ranges.
 /// \throws std::invalid_argument naming the parameter
