@@ -132,7 +132,9 @@ set (ValueError naming it).
 3D LiDAR SLAM on an odometry's poses: every scan a node of an SE(3) pose graph, loop candidates
 from a Scan Context descriptor of each node's local map (searched over every yaw, so revisits in
 the opposite direction are found) and from a radius search around the estimate, verified by ICP
-with overlap tests, optimised with Ceres (Huber loss on loops). Not thread-safe.
+with overlap tests, optimised with Ceres (Huber loss on loops). Its calls hold the GIL: threads
+sharing one Slam3D run one call at a time. A refused scan (a pose that is not rigid or beyond
+1e6 m) leaves the object as it was.
 )doc")
       .def(py::init([](std::optional<Slam3DConfig> config) {
              return std::make_unique<Slam3D>(config ? *config : Slam3DConfig{});

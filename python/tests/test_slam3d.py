@@ -110,3 +110,23 @@ def test_bad_input_is_refused():
         slam.add_scan(np.zeros((10, 3)), bad)
     with pytest.raises(ValueError):
         mm.run_slam3d(str(KITTI), frames=[3, 2])
+
+
+def test_a_refused_scan_leaves_the_object_as_it_was():
+    rng = np.random.default_rng(2)
+    points = rng.uniform(-10, 10, (500, 3))
+    slam = mm.Slam3D()
+    slam.add_scan(points, np.eye(4))
+    far = np.eye(4)
+    far[0, 3] = 1e30
+    reflection = np.diag([1.0, 1.0, -1.0, 1.0])
+    for pose, needle in ((far, "beyond"), (reflection, "not a rotation")):
+        with pytest.raises(ValueError, match=needle):
+            slam.add_scan(points, pose)
+        assert len(slam) == 1 and slam.poses.shape == (1, 4, 4)
+    step = np.eye(4)
+    step[0, 3] = 1.0
+    report = slam.add_scan(np.zeros((0, 3)), step)  # a scan without points is still a node
+    assert report["node"] == 1 and len(slam) == 2
+    slam.finish()
+    assert np.allclose(slam.poses[1], step)

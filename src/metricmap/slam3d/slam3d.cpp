@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "metricmap/common/rigid_transform.h"
 #include "metricmap/posegraph/optimize.h"
 #include "metricmap/registration/voxel_downsample.h"
 
@@ -82,9 +83,9 @@ std::size_t Slam3D::bytes() const {
 Slam3DFrameReport Slam3D::addScan(const pcl::PointCloud<pcl::PointXYZ>& scan,
                                   const Eigen::Isometry3d& odometry_pose) {
   if (finished_) throw std::logic_error("Slam3D::addScan after finish()");
-  if (!odometry_pose.matrix().allFinite())
-    throw std::invalid_argument("Slam3D::addScan: odometry pose of node " +
-                                std::to_string(nodes_.size()) + " is not finite");
+  // Everything is checked before the first member changes: a refused scan leaves no trace.
+  checkRigidTransform(odometry_pose.matrix(),
+                      "Slam3D::addScan: odometry pose of node " + std::to_string(nodes_.size()));
   Slam3DFrameReport report;
   const std::size_t k = nodes_.size();
   report.node = k;
@@ -104,6 +105,7 @@ Slam3DFrameReport Slam3D::addScan(const pcl::PointCloud<pcl::PointXYZ>& scan,
     const Eigen::Isometry3d step = odometry_.back().inverse() * odometry_pose;
     pose = poses_.back() * step;
     node.travel = nodes_.back().travel + step.translation().norm();
+    checkRigidTransform(pose.matrix(), "Slam3D::addScan: map pose of node " + std::to_string(k));
   }
   nodes_.push_back(std::move(node));
   odometry_.push_back(odometry_pose);
