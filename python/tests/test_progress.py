@@ -75,7 +75,11 @@ def test_progress_must_be_callable(intel):
 
 
 CHILD = r"""
-import sys, time
+import signal, sys, time
+# Ctrl-C as a fresh interpreter in a terminal has it: a process started from a test run may
+# inherit SIGINT blocked or ignored.
+signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
+signal.signal(signal.SIGINT, signal.default_int_handler)
 import metricmap as mm
 src = mm.open_scan_source(sys.argv[1])
 print("start", flush=True)
