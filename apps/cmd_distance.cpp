@@ -19,7 +19,7 @@
 #include "metricmap/io/map_server.h"
 #include "metricmap/io/map_server_reader.h"
 #include "metricmap/io/point_rows_csv.h"
-#include "octomap_quiet.h"
+#include "metricmap/occupancy/octomap_quiet.h"
 #include "table.h"
 
 namespace metricmap::cli {

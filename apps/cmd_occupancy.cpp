@@ -14,11 +14,11 @@
 #include "commands.h"
 #include "metricmap/io/output_set.h"
 #include "metricmap/occupancy/cast_totals.h"
+#include "metricmap/occupancy/octomap_quiet.h"
 #include "metricmap/sequence/sequence_mapper.h"
 #include "occupancy_options.h"
 #include "occupancy_outputs.h"
 #include "occupancy_report.h"
-#include "octomap_quiet.h"
 #include "ranks.h"
 #include "sequence_options.h"
 
@@ -68,8 +68,9 @@ void run(const OccupancyOptions& o, const Ranks& ranks) {
   const OccupancyPlan plan = checkOccupancyOptions(o, kind);
   OccupancyTotals tot;
   auto t = std::chrono::steady_clock::now();
-  LogOddsMap map =
-      from_file ? readOctomapQuietly(o.inputs[0], occupancyExportUse(o)) : LogOddsMap(plan.params);
+  LogOddsMap map = from_file
+                       ? readOctomapQuietly(o.inputs[0], LogOddsParams(), occupancyExportUse(o))
+                       : LogOddsMap(plan.params);
   if (from_file) tot.load_s = secondsSince(t);
   map.setThreads(o.threads);
   if (!from_file) castScans(o, kind, ranks, map, tot);

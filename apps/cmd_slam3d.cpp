@@ -18,10 +18,10 @@
 #include "metricmap/io/map_server.h"
 #include "metricmap/io/output_set.h"
 #include "metricmap/io/trajectory.h"
+#include "metricmap/occupancy/octomap_quiet.h"
 #include "metricmap/posegraph/g2o_io.h"
 #include "metricmap/sequence/sequence_mapper.h"
 #include "metricmap/slam3d/slam3d_run.h"
-#include "octomap_quiet.h"
 #include "sequence_options.h"
 #include "slam3d_report.h"
 

@@ -13,8 +13,8 @@
 #include "metricmap/io/laser_scan.h"
 #include "metricmap/io/lines_json.h"
 #include "metricmap/occupancy/occupancy_export.h"
+#include "metricmap/occupancy/octomap_quiet.h"
 #include "metricmap/viz/view_content.h"
-#include "octomap_quiet.h"
 #include "view_options.h"
 #include "viz_loader.h"
 
@@ -63,7 +63,7 @@ void run(const ViewOptions& o, const CLI::App& app) {
   for (const std::string& f : o.files) {
     CloudRGB part;
     if (isOctomapFile(f)) {
-      const LogOddsMap map = readOctomapQuietly(f, cubeUse(o.free));
+      const LogOddsMap map = readOctomapQuietly(f, LogOddsParams(), cubeUse(o.free));
       viz::addMapVoxels(map, f, o.free, request.occupied, request.free);
     } else if (isScanLog(f, o)) {
       loadScanLog(f, o, part);

@@ -6,7 +6,7 @@
 #include "metricmap/io/map_server.h"
 #include "metricmap/io/trajectory.h"
 #include "metricmap/occupancy/occupancy_export.h"
-#include "octomap_quiet.h"
+#include "metricmap/occupancy/octomap_quiet.h"
 
 namespace metricmap::cli {
 

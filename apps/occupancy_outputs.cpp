@@ -3,7 +3,7 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/map_server.h"
-#include "octomap_quiet.h"
+#include "metricmap/occupancy/octomap_quiet.h"
 
 namespace metricmap::cli {
 

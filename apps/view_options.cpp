@@ -7,7 +7,7 @@
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/common/parse_number.h"
 #include "metricmap/io/laser_scan.h"
-#include "octomap_quiet.h"
+#include "metricmap/occupancy/octomap_quiet.h"
 
 namespace metricmap::cli {
 namespace {
@@ -94,7 +94,7 @@ void checkOctomapBudget(const ViewOptions& o) {
   std::uint64_t voxel_bytes = 0, voxels = 0;
   for (const std::string& f : o.files) {
     if (!isOctomapFile(f)) continue;
-    const OctomapExpansion e = inspectOctomapQuietly(f, cubeUse(o.free));
+    const OctomapExpansion e = inspectOctomapQuietly(f, LogOddsParams(), cubeUse(o.free));
     voxel_bytes += e.map_bytes + e.use_bytes;
     voxels += o.free ? e.voxels : e.occupied_voxels;
   }
