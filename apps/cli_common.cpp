@@ -171,6 +171,12 @@ CLI::Validator declaredRange(const ParameterSpec& spec) {
       spec.kind == ParameterKind::Real ? "NUMBER" : "INT");
 }
 
+CLI::Validator declaredRange(const std::vector<ParameterSpec>& schema, const std::string& name) {
+  for (const ParameterSpec& p : schema)
+    if (p.name == name) return declaredRange(p);
+  throw std::logic_error("no declared parameter " + name);
+}
+
 void refuseIgnored(const CLI::App& app, const std::string& option, bool applies,
                    const std::string& why) {
   if (!applies && app.count(option) > 0) throw UsageError(option + " has no effect " + why);

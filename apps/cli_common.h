@@ -71,6 +71,9 @@ CLI::Validator finiteIn(double min, double max);
 /// common/parameter_schema.h), so that an option and `--set` accept the same values.
 CLI::Validator declaredRange(const ParameterSpec& spec);
 
+/// \brief declaredRange of the parameter `name` of `schema` (a configuration's declaration).
+CLI::Validator declaredRange(const std::vector<ParameterSpec>& schema, const std::string& name);
+
 /// \brief Usage error (exit 2) when `option` was given on `app`'s command line although it has no
 /// effect in this run (`applies` false): "OPTION has no effect WHY" (an option
 /// is honoured or refused, never dropped silently).

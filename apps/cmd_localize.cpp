@@ -203,24 +203,25 @@ void addLocalizeCommand(CLI::App& app) {
   sub->add_option("--out-png", o->out_png, "Picture: the map with the localised path (blue)")
       ->check(kOutputFile);
   Localizer2DConfig& c = o->config;
+  const std::vector<ParameterSpec> schema = localizer2DParameterSchema();
   sub->add_option("--max-range", c.max_range, "Beams beyond are dropped (m)")
-      ->check(finiteIn(0.01, 1e4))
+      ->check(declaredRange(schema, "max_range"))
       ->capture_default_str();
   sub->add_option("--min-score", c.global_min_score,
                   "Score a global fix must reach (mean probability of the scan's cells)")
-      ->check(finiteIn(0.01, 0.99))
+      ->check(declaredRange(schema, "global_min_score"))
       ->capture_default_str();
   sub->add_option("--min-margin", c.global_min_margin,
                   "A global fix must beat the best distinct pose's score by this much")
-      ->check(finiteIn(0, 1))
+      ->check(declaredRange(schema, "global_min_margin"))
       ->capture_default_str();
   sub->add_option("--track-min-score", c.track_min_score,
                   "Tracked scans scoring below are weak (not reported)")
-      ->check(finiteIn(0.01, 0.99))
+      ->check(declaredRange(schema, "track_min_score"))
       ->capture_default_str();
   sub->add_option("--lost-after", c.lost_after_weak_scans,
                   "Weak scans in a row after which the robot is lost (global search again)")
-      ->check(countIn(1, 1000000))
+      ->check(declaredRange(schema, "lost_after_weak_scans"))
       ->capture_default_str();
   sub->add_option("--set", o->set,
                   "Any localisation parameter, NAME=VALUE (repeatable; names in "

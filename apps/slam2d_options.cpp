@@ -50,37 +50,31 @@ void applySettings(const CLI::App& app, const std::vector<std::string>& settings
   }
 }
 
-// The library's declaration of a parameter.
-ParameterSpec spec(const std::string& name) {
-  for (const ParameterSpec& p : slam2DParameterSchema())
-    if (p.name == name) return p;
-  throw std::logic_error("no SLAM parameter " + name);
-}
-
 }  // namespace
 
 void addSlam2DOptions(CLI::App& app, Slam2DOptionValues& o) {
+  const std::vector<ParameterSpec> schema = slam2DParameterSchema();
   Slam2DConfig& c = o.config;
   app.add_option("--map-resolution", c.map.resolution, "Cell of the map (m)")
-      ->check(declaredRange(spec("map_resolution")))
+      ->check(declaredRange(schema, "map_resolution"))
       ->capture_default_str();
   app.add_option("--resolution", c.resolution, "Cell of the submaps (m)")
-      ->check(declaredRange(spec("resolution")))
+      ->check(declaredRange(schema, "resolution"))
       ->capture_default_str();
   app.add_option("--max-range", c.max_range, "Beams beyond: free space only (m)")
-      ->check(declaredRange(spec("max_range")))
+      ->check(declaredRange(schema, "max_range"))
       ->capture_default_str();
   app.add_option("--scans-per-submap", c.scans_per_submap, "Nodes a submap receives")
-      ->check(declaredRange(spec("scans_per_submap")))
+      ->check(declaredRange(schema, "scans_per_submap"))
       ->capture_default_str();
   app.add_option("--loop-min-score", c.loop_min_score, "Score a loop closure must reach")
-      ->check(declaredRange(spec("loop_min_score")))
+      ->check(declaredRange(schema, "loop_min_score"))
       ->capture_default_str();
   app.add_option("--loop-window", c.loop_linear_window, "Loop search half-width (m)")
-      ->check(declaredRange(spec("loop_linear_window")))
+      ->check(declaredRange(schema, "loop_linear_window"))
       ->capture_default_str();
   app.add_option("--loop-angle", c.loop_angular_window_deg, "Loop search half-angle (deg)")
-      ->check(declaredRange(spec("loop_angular_window_deg")))
+      ->check(declaredRange(schema, "loop_angular_window_deg"))
       ->capture_default_str();
   app.add_option("--set", o.set,
                  "Any SLAM parameter, NAME=VALUE (repeatable; names in docs/SLAM.md)");

@@ -17,6 +17,7 @@
 #include "metricmap/localization/localizer_2d.h"
 #include "metricmap/localization/localizer_2d_parameters.h"
 #include "object_lock.h"
+#include "parameter_list.h"
 #include "poses.h"
 #include "progress.h"
 #include "sequence.h"
@@ -238,8 +239,10 @@ ValueError
           "Counts (scans, localised, global_searches, fixes, ambiguous, losses, candidates, "
           "first_fix) and seconds per phase.");
 
-  m.def("localize2d_parameters", &localizer2DParameterNames,
-        "The names Localizer2D(parameters=...) knows.");
+  m.def(
+      "localize2d_parameters", [] { return parameterList(localizer2DParameterSchema()); },
+      "list[dict]: every Localizer2D parameter as the library declares it (name, kind, unit, "
+      "rule, min, max, min_open, max_open, default, doc).");
 
   py::class_<PyLocalizeRun>(m, "LocalizationRun", "A finished run_localize2d: one row per scan.")
       .def_property_readonly(

@@ -19,6 +19,7 @@
 #include "metricmap/slam/slam_2d_parameters.h"
 #include "metricmap/slam/slam_2d_run.h"
 #include "object_lock.h"
+#include "parameter_list.h"
 #include "posegraph.h"
 #include "poses.h"
 #include "progress.h"
@@ -127,25 +128,7 @@ parameters are the ``map_*`` attributes.
         "Slam2DConfig(**kwargs): the defaults, with the named attributes set.");
   declaredFields(c);
   m.def(
-      "slam2d_parameters",
-      [] {
-        py::list out;
-        for (const ParameterSpec& p : slam2DParameterSchema()) {
-          py::dict d;
-          d["name"] = p.name;
-          d["kind"] = parameterKindName(p.kind);
-          d["unit"] = p.unit;
-          d["rule"] = parameterRule(p);
-          d["min"] = p.range.min;
-          d["max"] = p.range.max;
-          d["min_open"] = p.range.min_open;
-          d["max_open"] = p.range.max_open;
-          d["default"] = p.default_text;
-          d["doc"] = p.doc;
-          out.append(d);
-        }
-        return out;
-      },
+      "slam2d_parameters", [] { return parameterList(slam2DParameterSchema()); },
       "list[dict]: every Slam2DConfig parameter as the library declares it (name, kind, unit, "
       "rule, min, max, min_open, max_open, default, doc).");
   c.def(

@@ -13,6 +13,7 @@
 #include "metricmap/slam3d/slam3d_config.h"
 #include "metricmap/slam3d/slam3d_run.h"
 #include "object_lock.h"
+#include "parameter_list.h"
 #include "poses.h"
 #include "progress.h"
 #include "sequence.h"
@@ -189,6 +190,11 @@ dict
             return arrayFrom(flat, {py::ssize_t(pts.size()), 3});
           },
           py::arg("node"), "(M, 3) float32: node's local map in its frame.");
+
+  m.def(
+      "slam3d_parameters", [] { return parameterList(slam3DParameterSchema()); },
+      "list[dict]: every Slam3DConfig parameter as the library declares it (name, kind, unit, "
+      "rule, min, max, min_open, max_open, default, doc).");
 
   m.def(
       "run_slam3d",

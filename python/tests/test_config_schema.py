@@ -37,14 +37,15 @@ def test_the_stub_lists_every_declared_field_with_its_type():
     assert stub == {p["name"]: p["kind"] for p in declared()}
 
 
-def test_the_docs_table_is_the_declaration():
-    spec = importlib.util.spec_from_file_location("table", ROOT / "tools" / "slam2d_parameter_table.py")
+@pytest.mark.parametrize("name", ["slam2d", "localize2d", "slam3d"])
+def test_the_docs_table_is_the_declaration(name):
+    spec = importlib.util.spec_from_file_location("table", ROOT / "tools" / "parameter_tables.py")
     tool = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(tool)
-    page = (ROOT / "docs" / "SLAM.md").read_text()
-    assert tool.documented(page) == tool.table(declared()), (
-        "docs/SLAM.md's parameter table differs from the library: run "
-        "tools/slam2d_parameter_table.py --write"
+    page = tool.PAGES[name].read_text()
+    assert tool.documented(name, page) == tool.table(tool.declared(name)), (
+        f"{tool.PAGES[name].name}'s parameter table differs from the library: run "
+        "tools/parameter_tables.py --write"
     )
 
 

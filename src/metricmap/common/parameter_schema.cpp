@@ -1,5 +1,6 @@
 #include "metricmap/common/parameter_schema.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -74,6 +75,31 @@ const char* parameterKindName(ParameterKind kind) {
       return "bool";
   }
   return "float";
+}
+
+std::string nearestParameterName(const std::string& name, const std::vector<std::string>& names) {
+  // Levenshtein distance, one row at a time
+  auto edits = [](const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+      std::size_t diag = row[0];
+      row[0] = i;
+      for (std::size_t j = 1; j <= b.size(); ++j) {
+        const std::size_t up = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        diag = up;
+      }
+    }
+    return row[b.size()];
+  };
+  std::string nearest;
+  std::size_t best = 4;  // within three edits
+  for (const std::string& n : names) {
+    const std::size_t d = edits(name, n);
+    if (d < best) best = d, nearest = n;
+  }
+  return nearest;
 }
 
 }  // namespace metricmap

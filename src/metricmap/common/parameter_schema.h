@@ -43,4 +43,8 @@ void checkParameter(const ParameterSpec& spec, double value);
 /// \brief "kind" as the docs and the Python module name it: "float", "int", "bool".
 const char* parameterKindName(ParameterKind kind);
 
+/// \brief The nearest of `names` to `name` within three edits ("" when none is): the "did you
+/// mean" of an unknown parameter.
+std::string nearestParameterName(const std::string& name, const std::vector<std::string>& names);
+
 }  // namespace metricmap

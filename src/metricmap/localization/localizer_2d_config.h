@@ -65,7 +65,8 @@ struct Localizer2DConfig {
   std::size_t lost_after_weak_scans = 5;
 };
 
-/// \brief \throws std::invalid_argument naming the first value out of its range.
+/// \brief \throws std::invalid_argument "NAME must be RULE, got VALUE" for the first value out of
+/// its declared range (localizer2DParameterSchema), or max_range <= min_range.
 void validateLocalizer2DConfig(const Localizer2DConfig& config);
 
 }  // namespace metricmap

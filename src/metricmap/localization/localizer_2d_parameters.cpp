@@ -1,93 +1,139 @@
 #include "metricmap/localization/localizer_2d_parameters.h"
 
-#include <cstddef>
-#include <cstdint>
-#include <cstdio>
 #include <limits>
 #include <stdexcept>
-#include <variant>
 
-#include "metricmap/common/parse_number.h"
+#include "metricmap/common/format_number.h"
+#include "metricmap/common/parameter_table.h"
 
 namespace metricmap {
 namespace {
 
 using C = Localizer2DConfig;
-using Field = std::variant<double C::*, std::size_t C::*, int C::*>;
 
-struct Entry {
-  const char* name;
-  Field field;
-};
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr ParameterRange kNonNegative{0.0, kInf, false};  // finite, >= 0
+constexpr ParameterRange kPositive{0.0, kInf, true};      // finite, > 0
+constexpr ParameterRange kUnit{0.0, 1.0};
+constexpr ParameterRange kScore{0.01, 0.99};
+constexpr ParameterRange kHalfTurn{0.0, 180.0, true, false};
 
-const std::vector<Entry>& entries() {
-  static const std::vector<Entry> list = {
-      {"min_range", &C::min_range},
-      {"max_range", &C::max_range},
-      {"voxel_filter", &C::voxel_filter},
-      {"occupied_probability", &C::occupied_probability},
-      {"free_probability", &C::free_probability},
-      {"branch_and_bound_depth", &C::branch_and_bound_depth},
-      {"global_coarsening", &C::global_coarsening},
-      {"global_search_points", &C::global_search_points},
-      {"global_min_score", &C::global_min_score},
-      {"global_min_margin", &C::global_min_margin},
-      {"global_max_crossing", &C::global_max_crossing},
-      {"global_crossing_clearance", &C::global_crossing_clearance},
-      {"global_distinct_distance", &C::global_distinct_distance},
-      {"global_distinct_angle_deg", &C::global_distinct_angle_deg},
-      {"global_min_motion", &C::global_min_motion},
-      {"global_min_turn_deg", &C::global_min_turn_deg},
-      {"global_every_n_scans", &C::global_every_n_scans},
-      {"initial_linear_window", &C::initial_linear_window},
-      {"initial_angular_window_deg", &C::initial_angular_window_deg},
-      {"track_linear_window", &C::track_linear_window},
-      {"track_angular_window_deg", &C::track_angular_window_deg},
-      {"track_angular_window_per_turn", &C::track_angular_window_per_turn},
-      {"translation_weight", &C::translation_weight},
-      {"rotation_weight", &C::rotation_weight},
-      {"refine_iterations", &C::refine_iterations},
-      {"track_min_score", &C::track_min_score},
-      {"lost_after_weak_scans", &C::lost_after_weak_scans},
-  };
-  return list;
-}
-
-const Entry& find(const std::string& name) {
-  for (const Entry& e : entries())
-    if (name == e.name) return e;
-  throw std::invalid_argument("unknown localisation parameter '" + quoteForMessage(name) + "'");
+// Every field of Localizer2DConfig, declared once: the validator, --set and the command's own
+// options, the Python module and the docs' table come from here.
+const ParameterTable<C>& table() {
+  static const ParameterTable<C> t(
+      "localisation",
+      {
+          {"min_range", &C::min_range, "m", {0.0, 1e4}, "shorter beams are dropped"},
+          {"max_range", &C::max_range, "m", {0.01, 1e4}, "longer beams are dropped (> min_range)"},
+          {"voxel_filter",
+           &C::voxel_filter,
+           "m",
+           {0.001, 10.0},
+           "points kept for matching: one per square of this edge"},
+          {"occupied_probability",
+           &C::occupied_probability,
+           "",
+           {0.5, 1.0, true, true},
+           "the matching grid's occupied cells"},
+          {"free_probability",
+           &C::free_probability,
+           "",
+           {0.0, 0.5, true, true},
+           "the matching grid's free and unknown cells"},
+          {"branch_and_bound_depth",
+           &C::branch_and_bound_depth,
+           "",
+           {1.0, 16.0},
+           "levels of the multi-resolution search grids"},
+          {"global_coarsening",
+           &C::global_coarsening,
+           "",
+           {1.0, 8.0},
+           "the global search runs on the map coarsened this many times (1: the map)"},
+          {"global_search_points",
+           &C::global_search_points,
+           "",
+           {10.0, kInf},
+           "points the global search scores, at most"},
+          {"global_min_score", &C::global_min_score, "", kScore,
+           "refined score a global fix must reach"},
+          {"global_min_margin", &C::global_min_margin, "", kUnit,
+           "search score a fix must have over the best distinct pose's"},
+          {"global_max_crossing", &C::global_max_crossing, "", kUnit,
+           "share of a fix's beams that may pass through walls"},
+          {"global_crossing_clearance", &C::global_crossing_clearance, "m", kNonNegative,
+           "crossings nearer the beam's end are not counted"},
+          {"global_distinct_distance", &C::global_distinct_distance, "m", kPositive,
+           "poses farther apart are distinct"},
+          {"global_distinct_angle_deg", &C::global_distinct_angle_deg, "deg", kHalfTurn,
+           "poses turned more are distinct"},
+          {"global_min_motion", &C::global_min_motion, "m", kNonNegative,
+           "a failed search is repeated after this much motion ..."},
+          {"global_min_turn_deg", &C::global_min_turn_deg, "deg", kNonNegative,
+           "... or this much turn ..."},
+          {"global_every_n_scans",
+           &C::global_every_n_scans,
+           "",
+           {1.0, kInf},
+           "... or this many scans (without odometry: the only rule)"},
+          {"initial_linear_window",
+           &C::initial_linear_window,
+           "m",
+           {0.0, 100.0, true, false},
+           "search half-width around a given initial pose"},
+          {"initial_angular_window_deg", &C::initial_angular_window_deg, "deg", kHalfTurn,
+           "search half-width around a given initial heading"},
+          {"track_linear_window",
+           &C::track_linear_window,
+           "m",
+           {0.0, 10.0},
+           "tracking: correlative search half-width"},
+          {"track_angular_window_deg",
+           &C::track_angular_window_deg,
+           "deg",
+           {0.0, 180.0},
+           "tracking: correlative search half-width"},
+          {"track_angular_window_per_turn",
+           &C::track_angular_window_per_turn,
+           "",
+           {0.0, 10.0},
+           "tracking: share of the predicted turn added to the angular half-width"},
+          {"translation_weight", &C::translation_weight, "", kNonNegative,
+           "Gauss-Newton prior on the search's translation"},
+          {"rotation_weight", &C::rotation_weight, "", kNonNegative,
+           "Gauss-Newton prior on the search's heading"},
+          {"refine_iterations", &C::refine_iterations, "", {1.0, 1000.0}, "Gauss-Newton steps"},
+          {"track_min_score", &C::track_min_score, "", kScore,
+           "a tracked scan scoring below is weak (kept for the prediction, not reported)"},
+          {"lost_after_weak_scans",
+           &C::lost_after_weak_scans,
+           "",
+           {1.0, 1e6},
+           "weak scans in a row that make a loss (the global search takes over)"},
+      });
+  return t;
 }
 
 }  // namespace
 
-std::vector<std::string> localizer2DParameterNames() {
-  std::vector<std::string> out;
-  for (const Entry& e : entries()) out.push_back(e.name);
-  return out;
-}
+std::vector<ParameterSpec> localizer2DParameterSchema() { return table().schema(); }
+
+std::vector<std::string> localizer2DParameterNames() { return table().names(); }
 
 std::string localizer2DParameter(const C& config, const std::string& name) {
-  const Field& f = find(name).field;
-  if (auto n = std::get_if<std::size_t C::*>(&f)) return std::to_string(config.**n);
-  if (auto i = std::get_if<int C::*>(&f)) return std::to_string(config.**i);
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", config.*std::get<double C::*>(f));
-  return buf;
+  return table().text(config, name);
 }
 
 void setLocalizer2DParameter(C& config, const std::string& name, const std::string& value) {
-  const Field& f = find(name).field;
-  if (auto n = std::get_if<std::size_t C::*>(&f)) {
-    config.** n = static_cast<std::size_t>(
-        parseInteger(value, name, 0, std::numeric_limits<std::int32_t>::max()));
-  } else if (auto i = std::get_if<int C::*>(&f)) {
-    config.** i =
-        static_cast<int>(parseInteger(value, name, std::numeric_limits<std::int32_t>::min(),
-                                      std::numeric_limits<std::int32_t>::max()));
-  } else {
-    config.*std::get<double C::*>(f) = parseFiniteDouble(value, name);
-  }
+  table().setText(config, name, value);
+}
+
+void validateLocalizer2DConfig(const Localizer2DConfig& c) {
+  table().checkRanges(c);
+  if (!(c.max_range > c.min_range))
+    throw std::invalid_argument("max_range must be > min_range, got " + formatNumber(c.max_range) +
+                                " <= " + formatNumber(c.min_range));
 }
 
 }  // namespace metricmap

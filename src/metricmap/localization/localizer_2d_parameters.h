@@ -6,9 +6,14 @@
 #include <string>
 #include <vector>
 
+#include "metricmap/common/parameter_schema.h"
 #include "metricmap/localization/localizer_2d_config.h"
 
 namespace metricmap {
+
+/// \brief Every parameter declared once: name, kind, unit, range, one-line doc and default, in
+/// the order of Localizer2DConfig's fields. validateLocalizer2DConfig checks these ranges.
+std::vector<ParameterSpec> localizer2DParameterSchema();
 
 /// \brief The names setLocalizer2DParameter knows, in the order of Localizer2DConfig's fields.
 std::vector<std::string> localizer2DParameterNames();

@@ -190,32 +190,12 @@ double valueOf(const Slam2DConfig& c, const Field& f) {
   return c.map.*std::get<double LogOddsParams::*>(f);
 }
 
-// Levenshtein distance, for "did you mean".
-std::size_t distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diag = up;
-    }
-  }
-  return row[b.size()];
-}
-
 const Entry& find(const std::string& name) {
-  const Entry* nearest = nullptr;
-  std::size_t best = std::numeric_limits<std::size_t>::max();
-  for (const Entry& e : entries()) {
+  for (const Entry& e : entries())
     if (name == e.name) return e;
-    const std::size_t d = distance(name, e.name);
-    if (d < best) best = d, nearest = &e;
-  }
   std::string msg = "unknown SLAM parameter '" + quoteForMessage(name) + "'";
-  if (nearest && best <= 3) msg += " (did you mean " + std::string(nearest->name) + "?)";
+  const std::string near = nearestParameterName(name, slam2DParameterNames());
+  if (!near.empty()) msg += " (did you mean " + near + "?)";
   throw std::invalid_argument(msg);
 }
 
