@@ -28,6 +28,7 @@
 #include "metricmap/localization/localize_2d_run.h"
 #include "metricmap/localization/localizer_2d_parameters.h"
 #include "sequence_options.h"
+#include "set_options.h"
 
 namespace metricmap::cli {
 namespace {
@@ -44,37 +45,19 @@ struct LocalizeOptions {
 /// Each name once, not also given by its own option, the initial pose's windows only with
 /// --initial-pose.
 void applySettings(const CLI::App& app, LocalizeOptions& o) {
-  static const std::vector<std::pair<std::string, std::string>> own = {
-      {"max_range", "--max-range"},
-      {"global_min_score", "--min-score"},
-      {"global_min_margin", "--min-margin"},
-      {"track_min_score", "--track-min-score"},
-      {"lost_after_weak_scans", "--lost-after"}};
-  std::vector<std::string> seen;
-  for (const std::string& s : o.set) {
-    const auto eq = s.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw UsageError("--set: '" + quoteForMessage(s) + "' is not NAME=VALUE");
-    const std::string name = s.substr(0, eq);
-    try {
-      setLocalizer2DParameter(o.config, name, s.substr(eq + 1));
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--set: ") + e.what());
-    }
-    if (std::find(seen.begin(), seen.end(), name) != seen.end())
-      throw UsageError("--set: " + name + " is given twice");
-    seen.push_back(name);
-    for (const auto& [field, option] : own)
-      if (field == name && app.count(option) > 0)
-        throw UsageError("--set " + name + " and " + option + " set the same parameter");
+  static const OwnOptions own = {{"max_range", "--max-range"},
+                                 {"global_min_score", "--min-score"},
+                                 {"global_min_margin", "--min-margin"},
+                                 {"track_min_score", "--track-min-score"},
+                                 {"lost_after_weak_scans", "--lost-after"}};
+  const std::vector<std::string> names =
+      applySetOptions(app, o.set, own, [&o](const std::string& n, const std::string& v) {
+        setLocalizer2DParameter(o.config, n, v);
+      });
+  for (const std::string& name : names)
     if (name.rfind("initial_", 0) == 0 && !o.initial_pose_given)
       throw UsageError("--set " + name + " has no effect without --initial-pose");
-  }
-  try {
-    validateLocalizer2DConfig(o.config);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(e.what());
-  }
+  validateSetOptions([&o] { validateLocalizer2DConfig(o.config); });
 }
 
 /// The localised scans' poses with their stamps (map frame).

@@ -23,6 +23,7 @@
 #include "metricmap/sequence/sequence_mapper.h"
 #include "metricmap/slam3d/slam3d_run.h"
 #include "sequence_options.h"
+#include "set_options.h"
 #include "slam3d_report.h"
 
 namespace metricmap::cli {
@@ -184,26 +185,10 @@ void addSlam3DCommand(CLI::App& app) {
     refuseIgnored(*sub, "--octomap-resolution", !o->out_bt.empty(), "without --out-bt");
     refuseIgnored(*sub, "--map-resolution", !o->out_map.empty() || !o->out_png.empty(),
                   "without --out-map or --out-png");
-    std::vector<std::string> names;
-    for (const std::string& s : o->set) {
-      const auto eq = s.find('=');
-      if (eq == std::string::npos || eq == 0)
-        throw UsageError("--set: '" + quoteForMessage(s) + "' is not NAME=VALUE");
-      const std::string name = s.substr(0, eq);
-      if (std::find(names.begin(), names.end(), name) != names.end())
-        throw UsageError("--set: " + name + " is given twice");
-      names.push_back(name);
-      try {
-        setSlam3DParameter(o->config, name, s.substr(eq + 1));
-      } catch (const std::invalid_argument& e) {
-        throw UsageError(std::string("--set: ") + e.what());
-      }
-    }
-    try {
-      validateSlam3DConfig(o->config);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--set: ") + e.what());
-    }
+    applySetOptions(*sub, o->set, {}, [&o](const std::string& n, const std::string& v) {
+      setSlam3DParameter(o->config, n, v);
+    });
+    validateSetOptions([&o] { validateSlam3DConfig(o->config); });
     checkRangeOptions(*sub, o->ranges);
     checkSourceOptions(*sub, o->source);
     RolePaths outputs = {{"--out-poses", o->out_poses},

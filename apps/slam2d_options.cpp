@@ -7,6 +7,7 @@
 #include "cli_common.h"
 #include "metricmap/common/parse_number.h"
 #include "metricmap/slam/slam_2d_parameters.h"
+#include "set_options.h"
 
 namespace metricmap::cli {
 namespace {
@@ -15,39 +16,20 @@ namespace {
 /// no loop parameter with --no-loop-closure; the whole configuration valid.
 void applySettings(const CLI::App& app, const std::vector<std::string>& settings, bool no_loops,
                    Slam2DConfig& config) {
-  static const std::vector<std::pair<std::string, std::string>> own = {
-      {"map_resolution", "--map-resolution"},
-      {"resolution", "--resolution"},
-      {"max_range", "--max-range"},
-      {"scans_per_submap", "--scans-per-submap"},
-      {"loop_min_score", "--loop-min-score"},
-      {"loop_linear_window", "--loop-window"},
-      {"loop_angular_window_deg", "--loop-angle"}};
-  std::vector<std::string> seen;
-  for (const std::string& s : settings) {
-    const std::size_t eq = s.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw UsageError("--set: '" + quoteForMessage(s) + "' is not NAME=VALUE");
-    const std::string name = s.substr(0, eq);
-    try {
-      setSlam2DParameter(config, name, s.substr(eq + 1));
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--set: ") + e.what());
-    }
-    if (std::find(seen.begin(), seen.end(), name) != seen.end())
-      throw UsageError("--set: " + name + " is given twice");
-    seen.push_back(name);
-    for (const auto& [field, option] : own)
-      if (field == name && app.count(option) > 0)
-        throw UsageError("--set " + name + " and " + option + " set the same parameter");
+  static const OwnOptions own = {{"map_resolution", "--map-resolution"},
+                                 {"resolution", "--resolution"},
+                                 {"max_range", "--max-range"},
+                                 {"scans_per_submap", "--scans-per-submap"},
+                                 {"loop_min_score", "--loop-min-score"},
+                                 {"loop_linear_window", "--loop-window"},
+                                 {"loop_angular_window_deg", "--loop-angle"}};
+  const std::vector<std::string> names = applySetOptions(
+      app, settings, own,
+      [&config](const std::string& n, const std::string& v) { setSlam2DParameter(config, n, v); });
+  for (const std::string& name : names)
     if (no_loops && isLoopClosureParameter(name))
       throw UsageError("--set " + name + " has no effect with --no-loop-closure");
-  }
-  try {
-    validateSlam2DConfig(config);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--set: ") + e.what());
-  }
+  validateSetOptions([&config] { validateSlam2DConfig(config); });
 }
 
 }  // namespace
