@@ -1,4 +1,4 @@
-// ROS bags as scan sources (issue 26): every fixture of tests/fixtures/bags/ (written by
+// ROS bags as scan sources: every fixture of tests/fixtures/bags/ (written by
 // independent writers: @mcap/core, @foxglove/rosmsg2-serialization, Python's sqlite3; see
 // tools/fixtures/) read back equal, point for point and time for time, to the scans it was made
 // from, read here with the project's other readers (KITTI source, readScanFile, CARMEN source);

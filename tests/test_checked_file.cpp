@@ -1,4 +1,4 @@
-// Checked writers and readers of issue 15's leftovers: the ASCII PCD writer is byte-identical
+// Checked writers and readers: the ASCII PCD writer is byte-identical
 // to PCL's (the oracle) but reports a full disk; messages name destinations, not temporaries;
 // special files are never read.
 #include <sys/stat.h>

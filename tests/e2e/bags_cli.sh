@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ROS bags as sources (issue 26): `info` on the real nebula VLP-16 rosbag2 bag and on the
+# ROS bags as sources: `info` on the real nebula VLP-16 rosbag2 bag and on the
 # fixtures (table and json), `odometry` refusing a packet topic (exit 2 naming the type) and
 # choosing among several scan topics (exit 2 listing them), odometry on the KITTI-frames bag
 # equal to the KITTI layout's (camera-0 convention: Tr P Tr^-1), map and slam2d on bags, and

@@ -62,7 +62,7 @@ check "nothing written by a refused option" test -z "$(ls -A "$o")"
 check "--obstacle-threshold 4294967295 is accepted: no cell is an obstacle" bash -c \
   "'$MM' $hm --map-size 100 --obstacle-threshold 4294967295 --out-prefix '$o/hm' >'$tmp/hm.json' &&
    grep -q '\"obstacle_cells\": 0' '$tmp/hm.json'"
-# (without --out-map: a map_server map with no occupied cell is refused, issue 24 class I)
+# (without --out-map: a map_server map with no occupied cell is refused)
 check "--min-hits 4294967295 is accepted: no cell is occupied" bash -c \
   "'$MM' kitti '$k' --frames 0 --min-hits 4294967295 --format json >'$tmp/k.json' &&
    grep -q '\"occupied_cells\": 0' '$tmp/k.json'"

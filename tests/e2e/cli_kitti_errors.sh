@@ -36,7 +36,7 @@ expect 1 "$o/nodir/m.pgm" -- "$MM" kitti "$k" --frames 0-1 --out-cloud "$o/g.pcd
   --out-poses "$o/p.txt" --out-map "$o/nodir/m.pgm"
 check "nothing written when one output fails" test -z "$(ls -A "$o")"
 # A directory with a dot: the YAML and PNGs stay beside the map. A map name without an extension
-# names no format and is refused (issue 24, class 10).
+# names no format and is refused.
 mkdir -p "$o/run.1"
 expect 2 "--out-map" -- "$MM" kitti "$k" --frames 0 --out-map "$o/run.1/m"
 check "map in a dotted directory" "$MM" kitti "$k" --frames 0 \

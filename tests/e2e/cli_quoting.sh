@@ -81,7 +81,7 @@ mpi_expect 2 2 "metricmap: usage: --frames: frames must be in acquisition order"
 mpi_expect 2 2 "metricmap: usage: unknown subcommand 'gird'" -- gird "$bun"
 # an input only one rank reads: that rank says it, first
 mpi_expect 2 1 "metricmap: error: $tmp/missing.pcd: cannot open" -- grid "$bun" "$tmp/missing.pcd" --cell-size 1 --distributed
-cp "$bun" "$tmp/bun2.pcd"  # one file named twice is refused (issue 24): a copy
+cp "$bun" "$tmp/bun2.pcd"  # one file named twice is refused: a copy
 mpi_expect 3 1 "metricmap: error: $tmp/missing.pcd: cannot open" -- grid "$tmp/missing.pcd" "$bun" "$tmp/bun2.pcd" --cell-size 1 --distributed --out "$o/g.pcd"
 check "nothing written under MPI" test -z "$(ls -A "$o")"
 finish

@@ -12,7 +12,7 @@ tumd=$D/open3d_tum_depth/TUM_depth.png
 tumc=$D/open3d_tum_depth/camera_primesense.json
 o=$tmp/o
 mkdir -p "$o"
-# further frames are copies: one file named twice is refused (issue 24)
+# further frames are copies: one file named twice is refused
 cp "$tumd" "$tmp/tum2.png"
 cp "$tumd" "$tmp/tum3.png"
 hm="--camera $tumc --resolution 0.05 --map-size 100 --z-bins 0.1,1 --out-prefix $o/hm"

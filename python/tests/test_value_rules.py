@@ -1,6 +1,6 @@
-"""The Python entry points of the library rules the fifth hardening pass added: tiny beam cuts,
-nothing done, files the reader would refuse, poses and numbers beyond their bounds, values given
-then replaced. Each raises the documented exception with a message naming the value."""
+"""The Python entry points of the library's value rules: tiny beam cuts, nothing done, files the
+reader would refuse, poses and numbers beyond their bounds, values given then replaced, empty
+selections. Each raises the documented exception with a message naming the value."""
 
 import math
 import pathlib
@@ -88,7 +88,7 @@ def small_map(tmp):
 
 
 def refusals6(tmp):
-    """Sixth pass: unread values, options without effect, files the readers refuse, exception
+    """Unread values, options without effect, files the readers refuse, exception
     types and messages quoting the value given."""
     pts = np.array([[1.0, 0.0, 0.0], [2.0, 1.0, 0.5]], np.float32)
     angles = np.linspace(-1.5, 1.5, 181)
@@ -140,7 +140,7 @@ def refusals6(tmp):
 
 
 @pytest.mark.parametrize("index", range(18))
-def test_sixth_pass_refusals(tmp_path, index):
+def test_refused_numbers_and_files(tmp_path, index):
     name, call, error, needle = refusals6(tmp_path)[index]
     with pytest.raises(error) as e:
         call()
@@ -150,7 +150,7 @@ def test_sixth_pass_refusals(tmp_path, index):
         assert not str(e.value).startswith("poses_"), str(e.value)
 
 
-def test_sixth_pass_limits_are_accepted(tmp_path):
+def test_their_limits_are_accepted(tmp_path):
     """The bounds themselves and the defaults still work: the refusals above are not blanket."""
     pts = np.array([[1.0, 0.0, 0.0], [2.0, 1.0, 0.5]], np.float32)
     odo = mm.LidarOdometry()
@@ -199,7 +199,7 @@ def test_pcd_header_warning_as_the_cli_prints_it(tmp_path):
 
 
 def refusals6b(tmp):
-    """Sixth pass, objects and selections: empty or unordered selections, options without effect
+    """Objects and selections: empty or unordered selections, options without effect
     on the scan runs, a map a file cannot hold, edges the g2o reader refuses, messages in the
     shortest number form."""
     (tmp / "rings").mkdir(exist_ok=True)
@@ -251,7 +251,7 @@ def refusals6b(tmp):
 
 
 @pytest.mark.parametrize("index", range(19))
-def test_sixth_pass_selection_and_object_refusals(tmp_path, index):
+def test_refused_selections_and_object_calls(tmp_path, index):
     name, call, error, needle = refusals6b(tmp_path)[index]
     with pytest.raises(error) as e:
         call()
@@ -259,7 +259,7 @@ def test_sixth_pass_selection_and_object_refusals(tmp_path, index):
     assert ".000000" not in str(e.value), (name, str(e.value))
 
 
-def test_sixth_pass_objects_at_their_limits(tmp_path, capfd):
+def test_objects_at_their_limits(tmp_path, capfd):
     """The accepted side of the rules above, and the file round trips they protect."""
     for res in (1e-4, 1000.0):
         assert mm.LogOddsMap(res).resolution == res
