@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "distance_query_csv.h"
 #include "metricmap/distance/distance_sources.h"
+#include "metricmap/distance/distance_volume.h"
 #include "metricmap/distance/inflation_costmap.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/array_writers.h"
@@ -31,7 +32,7 @@ struct DistanceOptions {
   double resolution = 0.0;
   std::string unknown = "free";
   bool signed_distance = false;
-  std::string out, out_costmap, query, out_query, format = "table";
+  std::string out, out_vdb, out_costmap, query, out_query, format = "table";
   unsigned threads = 0;
   InflationParams inflation;
 };
@@ -86,9 +87,10 @@ void runDistance(const CLI::App& app, const DistanceOptions& o) {
   if (o.query.empty() != o.out_query.empty())
     throw UsageError("--query and --out-query go together");
   requireExtension("--out", o.out, {".npy"}, "NumPy");
+  requireExtension("--out-vdb", o.out_vdb, {".vdb"}, "OpenVDB");
   requireExtension("--out-costmap", o.out_costmap, {".pgm"}, "PGM");
   MapServerFiles cost_files;
-  RolePaths outputs = {{"--out", o.out}, {"--out-query", o.out_query}};
+  RolePaths outputs = {{"--out", o.out}, {"--out-vdb", o.out_vdb}, {"--out-query", o.out_query}};
   if (costmap) {
     cost_files = mapServerFiles(o.out_costmap);
     cost_files.preview_png.clear();
@@ -138,6 +140,7 @@ void runDistance(const CLI::App& app, const DistanceOptions& o) {
     std::vector<std::size_t> shape(field.shape().begin(), field.shape().begin() + dims);
     writeNpyFloat32(staged.stage(o.out), shape, field.field());
   }
+  if (!o.out_vdb.empty()) writeVdb(staged.stage(o.out_vdb), vdbVolumeOf(field));
   std::size_t lethal = 0;
   if (costmap) {
     DistanceFieldParams cp;
@@ -210,6 +213,9 @@ void addDistanceCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_flag("--signed", o->signed_distance, "Negative inside obstacles");
   sub->add_option("--out", o->out, "The field as .npy (float32, metres, C order)")
+      ->check(kOutputFile);
+  sub->add_option("--out-vdb", o->out_vdb,
+                  "The field as OpenVDB (FloatGrid \"distance\", voxels at the max inactive)")
       ->check(kOutputFile);
   sub->add_option("--out-costmap", o->out_costmap,
                   "2D maps: nav2 inflation costmap as map_server PGM + YAML (raw mode)")

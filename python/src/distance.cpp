@@ -14,8 +14,10 @@
 #include "log_odds_object.h"
 #include "metricmap/common/format_number.h"
 #include "metricmap/distance/distance_sources.h"
+#include "metricmap/distance/distance_volume.h"
 #include "metricmap/distance/inflation_costmap.h"
 #include "metricmap/io/map_server_reader.h"
+#include "metricmap/io/output_set.h"
 
 namespace metricmap::python {
 namespace {
@@ -214,6 +216,22 @@ only what a change reaches.
           py::arg("points"),
           "(positions (N, 3), found (N,)): the nearest obstacle voxel centre within "
           "max_distance of each point's voxel; NaN where none")
+      .def(
+          "write_vdb",
+          [](const DistanceField& f, const std::filesystem::path& path) {
+            try {
+              py::gil_scoped_release release;
+              OutputSet staged;
+              writeVdb(staged.stage(path.string()), vdbVolumeOf(f));
+              staged.commit();
+            } catch (const std::runtime_error& e) {
+              raiseOSError(e);
+            }
+          },
+          py::arg("path"),
+          "Write the field as OpenVDB (FloatGrid 'distance', voxel (i, j, k) at origin + (i, j, "
+          "k) * resolution, voxels at max_distance inactive; a signed field as a level set), "
+          "atomically. OSError when it fails.")
       .def(
           "update",
           [](DistanceField& f, const PyLogOddsMap& map) {

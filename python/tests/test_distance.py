@@ -155,3 +155,17 @@ def test_update_from_a_map_of_another_resolution_is_refused():
     field = mm.DistanceField(random_log_odds_map(5), incremental=True)
     with pytest.raises(ValueError, match="resolution"):
         field.update(random_log_odds_map(5, resolution=0.2))
+
+
+def test_write_vdb_writes_an_openvdb_file_atomically(tmp_path):
+    """The voxel values themselves are read back through OpenVDB by the C++ suite
+    (VdbWriter.*); here: the file opens with OpenVDB's magic number, a path that cannot be
+    written raises OSError naming it and leaves nothing behind."""
+    f = mm.DistanceField(np.random.default_rng(3).uniform(-1, 1, (200, 3)), resolution=0.1,
+                         max_distance=0.3)
+    out = tmp_path / "f.vdb"
+    f.write_vdb(out)
+    assert out.read_bytes()[:4] == bytes([0x20, 0x42, 0x44, 0x56])
+    with pytest.raises(OSError, match="nodir"):
+        f.write_vdb(tmp_path / "nodir" / "f.vdb")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["f.vdb"]

@@ -76,7 +76,9 @@ PY
 
 # A real OctoMap file: the report's shape and counts agree with the .npy.
 "$MM" distance "$DATA/octomap_geb079/geb079.bt" --max-distance 0.5 --out "$tmp/g.npy" \
-  --format json >"$tmp/g.json"
+  --out-vdb "$tmp/g.vdb" --format json >"$tmp/g.json"
+# OpenVDB's magic number (0x56444220, little-endian) opens the file
+check "--out-vdb writes an OpenVDB file" test "$(head -c 4 "$tmp/g.vdb" | od -An -tx1 | tr -d ' ')" = 20424456
 check "3D report agrees with its .npy" $py - "$tmp" <<'PY'
 import sys, json, numpy as np
 d = sys.argv[1]
@@ -108,12 +110,14 @@ expect_cases \
   "1|smallest float32|distance $tmp/m.yaml --max-distance 1e-300 --out $tmp/bad.npy" \
   "1|far.pcd: point (1e+30, 0, 0)|distance $tmp/far.pcd --resolution 0.1 --out $tmp/bad.npy" \
   "2|--out-costmap|distance $DATA/octomap_geb079/geb079.bt --out-costmap $tmp/bad.pgm" \
-  "1|budget|--max-memory 1M distance $DATA/octomap_geb079/geb079.bt --out $tmp/bad.npy"
+  "1|budget|--max-memory 1M distance $DATA/octomap_geb079/geb079.bt --out $tmp/bad.npy" \
+  "2|--out-vdb|distance $tmp/m.yaml --out-vdb $tmp/bad.npy" \
+  "1|nodir/bad.vdb|distance $tmp/m.yaml --out-vdb $tmp/nodir/bad.vdb"
 ln "$tmp/m.pgm" "$tmp/img.pgm"
 expect 2 "map's image" -- "$MM" distance "$tmp/m.yaml" --out-costmap "$tmp/img.pgm"
 check "the map's image intact" cmp -s "$tmp/m.pgm" "$tmp/img.pgm"
 expect 2 "drop --signed" -- "$MM" distance "$tmp/m.yaml" --signed --out-costmap "$tmp/bad.pgm"
-check "nothing written by the refused runs" test ! -e "$tmp/bad.npy" -a ! -e "$tmp/bad.csv" -a ! -e "$tmp/bad.pgm"
+check "nothing written by the refused runs" test ! -e "$tmp/bad.npy" -a ! -e "$tmp/bad.csv" -a ! -e "$tmp/bad.pgm" -a ! -e "$tmp/bad.vdb"
 # A map with no occupied cell: written, and said once on stderr and in the report.
 "$MM" distance "$tmp/e.yaml" --out "$tmp/e.npy" --format json >"$tmp/e.json" 2>"$tmp/e.err"
 check "empty map reported" grep -q '"no_obstacle": true' "$tmp/e.json"
