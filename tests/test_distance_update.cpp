@@ -76,6 +76,51 @@ TEST(DistanceUpdate, IncrementalEqualsRecomputeVoxelForVoxel) {
   }
 }
 
+// Long lines and a short reach: an update recomputes only spans of each line (chunks of
+// several voxels widened by the reach), including spans at the box's walls; still equal to a
+// field computed anew, voxel for voxel.
+TEST(DistanceUpdate, SpansOfLongLinesEqualRecompute) {
+  for (bool signed_distance : {false, true}) {
+    for (UnknownAs unknown : {UnknownAs::Free, UnknownAs::Occupied}) {
+      LogOddsParams lp;
+      lp.resolution = 0.1;
+      LogOddsMap map(lp);
+      std::mt19937 rng(5);
+      std::uniform_int_distribution<int> x(-160, 160), y(-90, 90), z(0, 7);
+      std::uniform_real_distribution<double> u(0.0, 1.0);
+      auto scatter = [&](int count, double p_occ) {
+        for (int n = 0; n < count; ++n)
+          map.setLogOdds(VoxelKey{x(rng), y(rng), z(rng)}, u(rng) < p_occ ? 1.5f : -1.2f);
+      };
+      scatter(20000, 0.02);
+      for (int a = -160; a <= 160; ++a) map.setLogOdds(VoxelKey{a, 0, 3}, -1.2f);  // the whole span
+      DistanceFieldParams p;
+      p.max_distance = 0.35;  // a reach of 4 voxels over lines of 321 and 181
+      p.signed_distance = signed_distance;
+      p.unknown = unknown;
+      p.incremental = true;
+      p.threads = 2;
+      const OccupancyBox first = occupancyBoxOf(map, p);
+      ASSERT_GE(first.shape[0], 300u);
+      const KeyBox box{first.min_key, first.shape};
+      DistanceField field(first, p);
+      for (int round = 0; round < 3; ++round) {
+        scatter(round == 0 ? 5 : 300, 0.4);
+        // obstacles at both ends of a line: spans that reach the walls
+        map.setLogOdds(VoxelKey{-160, 0, 3}, round % 2 ? -1.2f : 1.5f);
+        map.setLogOdds(VoxelKey{160, 0, 3}, round % 2 ? 1.5f : -1.2f);
+        const DistanceUpdateReport r = field.update(map);
+        const DistanceField fresh(occupancyBoxOf(map, p, box), p);
+        SCOPED_TRACE(::testing::Message()
+                     << "signed " << signed_distance << " unknown occupied "
+                     << (unknown == UnknownAs::Occupied) << " round " << round);
+        EXPECT_GT(r.changed_voxels, 0u);
+        ASSERT_EQ(field.field(), fresh.field());  // exact, every voxel
+      }
+    }
+  }
+}
+
 // nav2_costmap_2d InflationLayer::computeCost, written out: distance in cells.
 std::uint8_t nav2Cost(double cells, double res, double inscribed, double scaling) {
   if (cells == 0) return 254;

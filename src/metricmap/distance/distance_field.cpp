@@ -28,18 +28,27 @@ class FieldSink : public detail::EdtSink {
         cap_(cap),
         max_(max_distance),
         res_(resolution),
-        side_(side) {}
-  void line(std::size_t j, std::size_t k, const std::uint32_t* d2) override {
+        side_(side) {
+    // the values of the squared distances below the cap, computed once (the same formula)
+    if (cap <= kTableLimit) {
+      table_.resize(std::size_t{cap} + 1);
+      for (std::uint32_t d2 = 0; d2 <= cap; ++d2) table_[d2] = distanceValue(d2, cap, max_, res_);
+    }
+  }
+  void line(std::size_t j, std::size_t k, std::size_t i0, std::size_t i1,
+            const std::uint32_t* d2) override {
     const std::size_t stride = shape_[1] * shape_[2], base = j * shape_[2] + k;
-    for (std::size_t i = 0; i < shape_[0]; ++i) {
+    for (std::size_t i = i0; i < i1; ++i) {
       const std::size_t at = base + i * stride;
       // side 0: every voxel; 1: non-obstacles (positive); -1: obstacles (negative)
       if (side_ == 1 && obstacle_[at]) continue;
       if (side_ == -1 && !obstacle_[at]) continue;
-      const float v = distanceValue(d2[i], cap_, max_, res_);
+      const std::uint32_t q = d2[i - i0];
+      const float v = table_.empty() ? distanceValue(q, cap_, max_, res_) : table_[q];
       field_[at] = side_ == -1 ? -v : v;
     }
   }
+  static constexpr std::uint32_t kTableLimit = 1u << 16;
   static float distanceValue(std::uint32_t d2, std::uint32_t cap, double max_d, double res) {
     if (d2 >= cap) return static_cast<float>(max_d);
     return static_cast<float>(std::min(max_d, std::sqrt(static_cast<double>(d2)) * res));
@@ -52,6 +61,7 @@ class FieldSink : public detail::EdtSink {
   std::uint32_t cap_;
   double max_, res_;
   int side_;
+  std::vector<float> table_;  // value of d2 for d2 <= cap_ (when cap_ <= kTableLimit)
 };
 
 std::string boxText(const OccupancyBox& box) {

@@ -32,34 +32,46 @@ struct EdtTransform {
   std::uint32_t* pass2 = nullptr;
 };
 
-/// \brief Lines to recompute in each pass: flags over the lines of the pass along z (i, j), y
-/// (i, k) and x (j, k). A pass that changes a value flags the next pass's line through it.
+/// \brief What to recompute in each pass, per line of the pass along z (i, j), y (i, k) and
+/// x (j, k): a mask of the chunks (of ceil(n / 64) voxels) holding a value that changed. A pass
+/// recomputes, on a dirty line, only the voxels a changed value can reach (within sqrt(cap)),
+/// compares them with the stored ones and marks the next pass's lines through each change.
 class EdtDirtyLines {
  public:
   explicit EdtDirtyLines(const EdtShape& shape);
-  void markPass1(std::size_t i, std::size_t j) { set(0, i * ny_ + j); }
-  std::atomic<std::uint8_t>* flags(int pass) { return flags_[pass].get(); }
+  /// The whole z-line (i, j) changed (its sites did).
+  void markPass1(std::size_t i, std::size_t j) {
+    masks_[0][i * ny_ + j].store(~std::uint64_t{0}, std::memory_order_relaxed);
+  }
+  /// Voxel q of line `line` of pass `pass` (0, 1, 2) holds a changed input.
+  void mark(int pass, std::size_t line, std::size_t q) {
+    std::atomic<std::uint64_t>& m = masks_[pass][line];
+    const std::uint64_t bit = std::uint64_t{1} << (q / chunk_[pass]);
+    if ((m.load(std::memory_order_relaxed) & bit) == 0) m.fetch_or(bit, std::memory_order_relaxed);
+  }
+  std::atomic<std::uint64_t>* masks(int pass) { return masks_[pass].get(); }
   std::size_t count(int pass) const { return counts_[pass]; }
+  std::size_t chunk(int pass) const { return chunk_[pass]; }
 
  private:
-  void set(int pass, std::size_t line) { flags_[pass][line].store(1, std::memory_order_relaxed); }
-  std::unique_ptr<std::atomic<std::uint8_t>[]> flags_[3];
-  std::size_t counts_[3];
+  std::unique_ptr<std::atomic<std::uint64_t>[]> masks_[3];
+  std::size_t counts_[3], chunk_[3];
   std::size_t ny_;
 };
 
-/// \brief Writes the final pass's squared distances of line (j, k) (x varies) to the output.
-/// `d2[i]` is the value of voxel (i, j, k).
+/// \brief Writes the final pass's squared distances of voxels i0..i1-1 of line (j, k) (x
+/// varies) to the output. `d2[i - i0]` is the value of voxel (i, j, k).
 class EdtSink {
  public:
   virtual ~EdtSink() = default;
-  virtual void line(std::size_t j, std::size_t k, const std::uint32_t* d2) = 0;
+  virtual void line(std::size_t j, std::size_t k, std::size_t i0, std::size_t i1,
+                    const std::uint32_t* d2) = 0;
 };
 
-/// \brief Run the three passes over every line (dirty == nullptr) or over the lines flagged
-/// in `dirty` (pass 1's flags set by the caller; values compared to the stored ones, so that
-/// only lines a changed value reaches are recomputed in the later passes).
-/// \return lines recomputed in the three passes together
+/// \brief Run the three passes over every line (dirty == nullptr) or over what `dirty` marks
+/// (pass 1's lines marked by the caller; values compared to the stored ones, so that only the
+/// spans a changed value reaches are recomputed in the later passes).
+/// \return lines recomputed (wholly or in part) in the three passes together
 std::size_t runEdt(const EdtShape& shape, const EdtTransform& t, EdtSink& sink, unsigned threads,
                    EdtDirtyLines* dirty);
 
