@@ -1,6 +1,10 @@
 #include "metricmap/mapping/bin_points.h"
 
+#include <algorithm>
 #include <cmath>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -16,10 +20,40 @@ inline std::int64_t toInt32(double v) {
   return static_cast<std::int64_t>(static_cast<std::int32_t>(v));
 }
 
+/// Round half to even in the default rounding mode, as std::nearbyint does, without a libm
+/// call: adding and subtracting 1.5 * 2^(mantissa bits) leaves the nearest integer (ties to
+/// even) for |v| < 2^(mantissa bits - 1); larger values are integers already; NaN stays NaN.
+inline double roundEven(double v) {
+  constexpr double kShift = 6755399441055744.0;                          // 1.5 * 2^52
+  return std::fabs(v) < 2251799813685248.0 ? (v + kShift) - kShift : v;  // 2^51
+}
+inline float roundEven(float v) {
+  constexpr float kShift = 12582912.0f;                          // 1.5 * 2^23
+  return std::fabs(v) < 4194304.0f ? (v + kShift) - kShift : v;  // 2^22
+}
+
+/// roundEven(x / r) and roundEven(y / r) of a point, both quotients from one division where
+/// the CPU divides two doubles at once (SSE2: x86-64's baseline).
+template <typename T>
+inline void binsOf(const T* p, T r, T& xb, T& yb) {
+  xb = roundEven(p[0] / r);
+  yb = roundEven(p[1] / r);
+}
+#if defined(__SSE2__)
+template <>
+inline void binsOf<double>(const double* p, double r, double& xb, double& yb) {
+  const __m128d q = _mm_div_pd(_mm_loadu_pd(p), _mm_set1_pd(r));
+  alignas(16) double out[2];
+  _mm_store_pd(out, q);
+  xb = roundEven(out[0]);
+  yb = roundEven(out[1]);
+}
+#endif
+
 /// np.round (half to even) of v / r, computed in T as numpy does for a T array.
 template <typename T>
 inline std::int64_t xyBin(T v, T r) {
-  return toInt32(static_cast<double>(std::nearbyint(v / r)));
+  return toInt32(static_cast<double>(roundEven(v / r)));
 }
 
 /// +1 non-decreasing, -1 non-increasing (numpy's _monotonicity; constant counts as increasing).
@@ -71,36 +105,56 @@ void binPoints(const T* xyz, std::size_t frames, std::size_t pixels, std::size_t
       std::abs(params.xy_resolution) <= static_cast<double>(std::numeric_limits<T>::max());
   const T r = static_cast<T>(params.xy_resolution);
   const std::size_t per_frame = static_cast<std::size_t>(m) * static_cast<std::size_t>(m) * nz;
+  // np.digitize's bin of z: searchsorted(bins, z, 'right') for increasing edges (edges <= z),
+  // len - searchsorted(bins[::-1], z, 'right') for decreasing ones; NaN sorts last.
+  // (the edges copied beside the loop: a few registers, not a vector's heap array)
+  constexpr std::size_t kInline = 8;
+  double edges[kInline] = {};
+  const bool inline_edges = nb <= kInline;
+  if (inline_edges) std::copy(bins.begin(), bins.end(), edges);
+  const auto zBin = [&](double z) -> std::size_t {
+    if (std::isnan(z)) return increasing ? nb : 0;
+    std::size_t below = 0;
+    if (inline_edges) {
+      for (std::size_t e = 0; e < nb; ++e) below += edges[e] <= z ? 1 : 0;
+    } else {
+      for (double b : bins) below += b <= z ? 1 : 0;
+    }
+    return increasing ? below : nb - below;
+  };
+  const auto mf = static_cast<T>(m);
   for (std::size_t f = 0; f < frames; ++f) {
     double* c = counts + f * per_frame;
-    for (std::size_t i = 0; i < pixels; ++i) {
-      const T* p = xyz + (f * pixels + i) * channels;
-      const std::int64_t xb = in_t ? xyBin<T>(p[0], r) : xyBin<double>(p[0], params.xy_resolution);
-      const std::int64_t yb = in_t ? xyBin<T>(p[1], r) : xyBin<double>(p[1], params.xy_resolution);
-      const bool ok = !std::isnan(p[0]) && xb >= 0 && xb < m && yb >= 0 && yb < m;
-      valid[f * pixels + i] = ok;
-      if (!ok) continue;
-      const double z = static_cast<double>(p[2]);
-      std::size_t zb = 0;
-      if (increasing) {  // searchsorted(bins, z, 'right'): edges <= z; NaN sorts last
-        if (std::isnan(z)) {
-          zb = nb;
-        } else {
-          while (zb < nb && bins[zb] <= z) ++zb;
-        }
-      } else {  // len - searchsorted(bins[::-1], z, 'right'): len - (edges <= z)
-        std::size_t below = 0;
-        if (std::isnan(z)) {
-          below = nb;
-        } else {
-          for (double b : bins) below += b <= z ? 1 : 0;
-        }
-        zb = nb - below;
+    const T* frame = xyz + f * pixels * channels;
+    bool* ok_out = valid + f * pixels;
+    if (in_t) {
+      // Branch-free bins: the rounding trick is exact wherever the bin can be valid (0 <= bin <
+      // map_size < 2^22); NaN, infinities and huge values fail the range test as numpy's
+      // INT32_MIN does.
+      for (std::size_t i = 0; i < pixels; ++i) {
+        const T* p = frame + i * channels;
+        T xb, yb;
+        binsOf(p, r, xb, yb);
+        const bool ok = xb >= T(0) && xb < mf && yb >= T(0) && yb < mf;
+        ok_out[i] = ok;
+        if (!ok) continue;
+        const std::size_t cell = static_cast<std::size_t>(yb) * static_cast<std::size_t>(m) +
+                                 static_cast<std::size_t>(xb);
+        c[cell * nz + zBin(static_cast<double>(p[2]))] += 1.0;
       }
+      continue;
+    }
+    for (std::size_t i = 0; i < pixels; ++i) {
+      const T* p = frame + i * channels;
+      const std::int64_t xb = xyBin<double>(p[0], params.xy_resolution);
+      const std::int64_t yb = xyBin<double>(p[1], params.xy_resolution);
+      const bool ok = !std::isnan(p[0]) && xb >= 0 && xb < m && yb >= 0 && yb < m;
+      ok_out[i] = ok;
+      if (!ok) continue;
       c[(static_cast<std::size_t>(yb) * static_cast<std::size_t>(m) +
          static_cast<std::size_t>(xb)) *
             nz +
-        zb] += 1.0;
+        zBin(static_cast<double>(p[2]))] += 1.0;
     }
   }
 }
