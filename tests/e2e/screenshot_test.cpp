@@ -123,6 +123,21 @@ int main(int argc, char** argv) {
     std::cerr << "FAIL: the study plot looks blank\n";
     ++failures;
   }
+  // The first panel (all cells / nodes: grid 10^4-10^5, octree 10^3) is drawn on a log scale:
+  // the octree's orange bars stand a good share of the panel's height (on a linear axis they
+  // are a few pixels tall). Orange = the second series' colour (220, 90, 40).
+  std::size_t orange = 0;
+  for (int y = 0; y < plot.height / 2; ++y) {
+    for (int x = 0; x < plot.width / 2; ++x) {
+      const std::size_t at = 3 * (static_cast<std::size_t>(y) * plot.width + x);
+      orange += plot.rgb[at] == 220 && plot.rgb[at + 1] == 90 && plot.rgb[at + 2] == 40;
+    }
+  }
+  std::cout << "plot: " << orange << " orange pixels in the first panel\n";
+  if (orange < static_cast<std::size_t>(plot.width / 2) * (plot.height / 2) / 100) {
+    std::cerr << "FAIL: the octree's bars in the first panel are (nearly) invisible\n";
+    ++failures;
+  }
   std::FILE* f = std::fopen(svg.c_str(), "r");
   char head[512] = {0};
   if (f == nullptr || std::fread(head, 1, sizeof head - 1, f) == 0 ||

@@ -4,6 +4,8 @@
 #include "metricmap/io/output_set.h"
 #include "metricmap/viz/vtk_png.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
@@ -31,6 +33,18 @@ const unsigned char kColours[][3] = {{60, 110, 200}, {220, 90, 40}, {70, 160, 80
 
 }  // namespace
 
+bool spansOrdersOfMagnitude(const PlotPanel& panel, double ratio) {
+  double lo = 0.0, hi = 0.0;
+  for (const auto& series : panel.series) {
+    for (double v : series.second) {
+      if (!(v > 0.0)) continue;
+      lo = lo == 0.0 ? v : std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  }
+  return lo > 0.0 && hi > ratio * lo;
+}
+
 void writeStudyPlot(const std::string& path, const std::vector<std::string>& categories,
                     const std::vector<PlotPanel>& panels) {
   const char* display = std::getenv("DISPLAY");
@@ -41,11 +55,13 @@ void writeStudyPlot(const std::string& path, const std::vector<std::string>& cat
   const int rows = static_cast<int>((panels.size() + 1) / 2);
   vtkNew<vtkContextView> view;
   view->GetRenderWindow()->SetOffScreenRendering(1);
-  view->GetRenderWindow()->SetSize(1400, 480 * rows);
+  view->GetRenderWindow()->SetSize(1400, 560 * rows);
   vtkNew<vtkChartMatrix> matrix;
   view->GetScene()->AddItem(matrix);
   matrix->SetSize(vtkVector2i(2, rows));
-  matrix->SetGutter(vtkVector2f(70.0f, 70.0f));
+  // room below each chart for its slanted category names, and left of the first
+  matrix->SetBorders(110, 130, 30, 30);
+  matrix->SetGutter(vtkVector2f(130.0f, 170.0f));
   vtkNew<vtkDoubleArray> ticks;
   vtkNew<vtkStringArray> labels;
   for (std::size_t c = 0; c < categories.size(); ++c) {
@@ -59,6 +75,8 @@ void writeStudyPlot(const std::string& path, const std::vector<std::string>& cat
     chart->SetTitle(panels[p].title);
     chart->GetTitleProperties()->SetFontSize(16);
     chart->SetShowLegend(true);
+    const bool log_scale = panels[p].log_scale || spansOrdersOfMagnitude(panels[p]);
+    if (log_scale) chart->SetTitle(panels[p].title + " (log scale)");
     vtkNew<vtkTable> table;
     vtkNew<vtkDoubleArray> x;
     x->SetName("x");
@@ -67,7 +85,9 @@ void writeStudyPlot(const std::string& path, const std::vector<std::string>& cat
     for (const auto& [name, values] : panels[p].series) {
       vtkNew<vtkDoubleArray> col;
       col->SetName(name.c_str());
-      for (double v : values) col->InsertNextValue(panels[p].log_scale ? std::max(v, 1.0) : v);
+      // a log scale as log10 of the values on a linear axis labelled in powers of ten (VTK's own
+      // log axis falls back to linear for bars, whose base is 0); values below 1 drawn as 1
+      for (double v : values) col->InsertNextValue(log_scale ? std::log10(std::max(v, 1.0)) : v);
       table->AddColumn(col);
     }
     for (std::size_t s = 0; s < panels[p].series.size(); ++s) {
@@ -80,11 +100,28 @@ void writeStudyPlot(const std::string& path, const std::vector<std::string>& cat
     vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
     bottom->SetCustomTickPositions(ticks, labels);
     bottom->SetTitle("");
+    // slanted names hang below the axis from their tick (right end at the tick), clear of the bars
     bottom->GetLabelProperties()->SetOrientation(30);
+    bottom->GetLabelProperties()->SetJustificationToRight();
+    bottom->GetLabelProperties()->SetVerticalJustificationToTop();
     bottom->GetLabelProperties()->SetFontSize(10);
     vtkAxis* left = chart->GetAxis(vtkAxis::LEFT);
     left->SetTitle("");
-    left->SetLogScale(panels[p].log_scale);
+    if (log_scale) {
+      double top = 0.0;
+      for (const auto& series : panels[p].series)
+        for (double v : series.second) top = std::max(top, std::log10(std::max(v, 1.0)));
+      vtkNew<vtkDoubleArray> powers;
+      vtkNew<vtkStringArray> names;
+      for (int e = 0; e <= static_cast<int>(std::ceil(top)); ++e) {
+        powers->InsertNextValue(e);
+        names->InsertNextValue(e < 4 ? std::to_string(static_cast<int>(std::pow(10, e)))
+                                     : "1e" + std::to_string(e));
+      }
+      left->SetCustomTickPositions(powers, names);
+      left->SetRange(0.0, std::ceil(top));
+      left->SetBehavior(vtkAxis::FIXED);
+    }
   }
   view->GetRenderWindow()->Render();
   if (!svg) {
