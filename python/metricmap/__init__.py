@@ -66,6 +66,10 @@ from ._metricmap import (  # noqa: F401
     write_trajectory,
 )
 from ._study import STUDY_CONFIGS, compare  # noqa: F401
+from . import _metricmap, _open3d
+from ._open3d import to_open3d  # noqa: F401
+
+_open3d.install(_metricmap)
 
 __all__ = [
     "FREE",
@@ -125,5 +129,6 @@ __all__ = [
     "slam2d_parameters",
     "split_and_merge",
     "write_pcd",
+    "to_open3d",
     "write_trajectory",
 ]
