@@ -1,6 +1,7 @@
 # Type stubs of the metricmap package (checked against the compiled module by
 # python/tests/test_stubs.py: every public name here exists there and vice versa, with the
 # same parameter names and order).
+import enum
 import os
 from typing import Any, Callable, Dict, Iterable, List, Mapping, Optional, Tuple, Union
 
@@ -11,9 +12,14 @@ _StrPath = Union[str, "os.PathLike[str]"]
 _Progress = Callable[[int, int], object]  # progress(done, total)
 
 __version__: str
-UNKNOWN: int
-FREE: int
-OCCUPIED: int
+class CellState(enum.IntEnum):
+    UNKNOWN = 0
+    FREE = 1
+    OCCUPIED = 2
+
+UNKNOWN: CellState
+FREE: CellState
+OCCUPIED: CellState
 
 STUDY_CONFIGS: Tuple[Dict[str, float], ...]
 
@@ -469,6 +475,8 @@ def grid(
     point_cells: bool = False,
 ) -> Grid: ...
 def to_open3d(points: Any) -> Any: ...
+def se2_to_se3(poses: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
+def se3_to_se2(poses: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
 def octree(
     points: npt.ArrayLike,
     max_points: int = 100,
