@@ -50,6 +50,7 @@ TEST(RelationError, TrajectoryInStampOrderAndPlanarPoses) {
   Trajectory t;
   t.stamps = {3.0, 1.0, 2.0};
   t.poses = {spatialPose({3, 0, 0.3}), spatialPose({1, 0, 0.1}), spatialPose({2, 0, -3.0})};
+  EXPECT_EQ(stampOrder(t), (std::vector<std::size_t>{1, 2, 0}));
   const Trajectory s = inStampOrder(t);
   EXPECT_EQ(s.stamps, (std::vector<double>{1.0, 2.0, 3.0}));
   for (std::size_t k = 0; k < 3; ++k) {

@@ -58,6 +58,8 @@ from ._metricmap import (  # noqa: F401
     run_odometry,
     run_slam2d,
     run_slam3d,
+    se2_to_se3,
+    se3_to_se2,
     sensor_profile,
     set_memory_budget,
     slam2d_parameters,
@@ -67,8 +69,17 @@ from ._metricmap import (  # noqa: F401
     write_trajectory,
 )
 from ._study import STUDY_CONFIGS, compare  # noqa: F401
+from . import _metricmap, _open3d
+from ._cell_state import CellState
+from ._open3d import to_open3d  # noqa: F401
+
+assert (_metricmap.UNKNOWN, _metricmap.FREE, _metricmap.OCCUPIED) == tuple(CellState)
+UNKNOWN, FREE, OCCUPIED = CellState.UNKNOWN, CellState.FREE, CellState.OCCUPIED
+
+_open3d.install(_metricmap)
 
 __all__ = [
+    "CellState",
     "FREE",
     "OCCUPIED",
     "STUDY_CONFIGS",
@@ -121,11 +132,14 @@ __all__ = [
     "run_odometry",
     "run_slam2d",
     "run_slam3d",
+    "se2_to_se3",
+    "se3_to_se2",
     "sensor_profile",
     "set_memory_budget",
     "slam2d_parameters",
     "slam3d_parameters",
     "split_and_merge",
     "write_pcd",
+    "to_open3d",
     "write_trajectory",
 ]

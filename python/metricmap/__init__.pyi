@@ -1,6 +1,7 @@
 # Type stubs of the metricmap package (checked against the compiled module by
 # python/tests/test_stubs.py: every public name here exists there and vice versa, with the
 # same parameter names and order).
+import enum
 import os
 from typing import Any, Callable, Dict, Iterable, List, Mapping, Optional, Tuple, Union
 
@@ -11,9 +12,14 @@ _StrPath = Union[str, "os.PathLike[str]"]
 _Progress = Callable[[int, int], object]  # progress(done, total)
 
 __version__: str
-UNKNOWN: int
-FREE: int
-OCCUPIED: int
+class CellState(enum.IntEnum):
+    UNKNOWN = 0
+    FREE = 1
+    OCCUPIED = 2
+
+UNKNOWN: CellState
+FREE: CellState
+OCCUPIED: CellState
 
 STUDY_CONFIGS: Tuple[Dict[str, float], ...]
 
@@ -39,6 +45,9 @@ class Grid:
     def origin(self) -> Tuple[float, float, float]: ...
     @property
     def cell_size(self) -> float: ...
+    @property
+    def point_cells(self) -> Optional[npt.NDArray[np.int64]]: ...
+    def to_open3d(self) -> Any: ...
     def __len__(self) -> int: ...
 
 class Octree:
@@ -130,6 +139,7 @@ class DistanceField:
     ) -> npt.NDArray[np.uint8]: ...
 
 class LogOddsMap:
+    def to_open3d(self, free: bool = False) -> Any: ...
     def __init__(
         self,
         resolution: float = 0.1,
@@ -200,6 +210,7 @@ class LidarOdometry:
 class Scan:
     @property
     def points(self) -> npt.NDArray[np.float32]: ...
+    def to_open3d(self) -> Any: ...
     @property
     def intensity(self) -> npt.NDArray[np.float32]: ...
     @property
@@ -457,8 +468,16 @@ def read_cloud(path: _StrPath) -> Dict[str, npt.NDArray[Any]]: ...
 def cloud_info(path: _StrPath) -> Dict[str, Any]: ...
 def write_pcd(path: _StrPath, points: npt.ArrayLike, format: str = "binary") -> None: ...
 def grid(
-    points: npt.ArrayLike, cell_size: float = 1.0, origin: str = "cloud-min", threads: int = 0
+    points: npt.ArrayLike,
+    cell_size: float = 1.0,
+    origin: Union[str, Tuple[float, float, float]] = "cloud-min",
+    threads: int = 0,
+    *,
+    point_cells: bool = False,
 ) -> Grid: ...
+def to_open3d(points: Any) -> Any: ...
+def se2_to_se3(poses: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
+def se3_to_se2(poses: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
 def octree(
     points: npt.ArrayLike,
     max_points: int = 100,

@@ -2,6 +2,7 @@
 // relation_error: trajectory files and metrics (io/trajectory.h, evaluation/).
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "arrays.h"
 #include "metricmap/evaluation/relation_error.h"
 #include "metricmap/evaluation/trajectory_evaluation.h"
+#include "metricmap/evaluation/trajectory_order.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_writer.h"
 #include "metricmap/io/trajectory.h"
@@ -27,7 +29,7 @@ namespace {
 Trajectory trajectoryFrom(const py::handle& poses, const py::object& stamps, const char* name,
                           const char* stamps_name = nullptr) {
   Trajectory t;
-  t.poses = posesFrom(poses, name);
+  t.poses = spatialOrPlanarPosesFrom(poses, name);
   if (!stamps.is_none())
     t.stamps = stampsFrom(
         stamps, stamps_name ? stamps_name : (std::string(name) + "_stamps").c_str(), t.size());
@@ -43,6 +45,39 @@ py::dict meanStd(const MeanAndStd& m) {
 
 std::vector<long long> asLong(const std::vector<std::size_t>& v) {
   return std::vector<long long>(v.begin(), v.end());
+}
+
+bool increasing(const std::vector<double>& stamps) {
+  for (std::size_t i = 1; i < stamps.size(); ++i)
+    if (!(stamps[i] > stamps[i - 1])) return false;
+  return true;
+}
+
+/// A trajectory with stamps in stamp order; `order` (when not null) receives the given index of
+/// each sorted pose (the identity when already in order). Equal stamps: ValueError naming `name`.
+Trajectory sortedByStamp(const Trajectory& t, const char* name,
+                         std::vector<std::size_t>* order = nullptr) {
+  std::vector<std::size_t> o(t.size());
+  for (std::size_t i = 0; i < o.size(); ++i) o[i] = i;
+  Trajectory sorted = t;
+  if (t.hasStamps() && !increasing(t.stamps)) {
+    try {
+      o = stampOrder(t);
+    } catch (const std::invalid_argument& e) {
+      throw py::value_error(std::string(name) + ": " + e.what());
+    }
+    for (std::size_t k = 0; k < o.size(); ++k) {
+      sorted.poses[k] = t.poses[o[k]];
+      sorted.stamps[k] = t.stamps[o[k]];
+    }
+  }
+  if (order) *order = std::move(o);
+  return sorted;
+}
+
+/// NaN where a figure is undefined (no segment, no pair), as numpy's mean of nothing.
+double definedOr(double value, bool defined) {
+  return defined ? value : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace
@@ -87,7 +122,8 @@ InputError
       "write_trajectory",
       [](const std::filesystem::path& path, ArrayLike poses, py::object stamps,
          const std::string& format) {
-        const Trajectory t = trajectoryFrom(poses, stamps, "poses", "stamps");
+        const Trajectory t =
+            sortedByStamp(trajectoryFrom(poses, stamps, "poses", "stamps"), "stamps");
         std::string text;
         if (format == "kitti" && !stamps.is_none())
           throw py::value_error("KITTI rows have no stamps: format='tum' writes them");
@@ -108,16 +144,18 @@ InputError
       py::arg("path"), py::arg("poses"), py::arg("stamps") = py::none(),
       py::arg("format") = "kitti", R"doc(
 Write a trajectory as KITTI rows (no stamps: giving them is a ValueError) or TUM rows
-(without stamps: the pose index), through a temporary file and a rename. TUM stamps must
-increase strictly as written (9 decimals), as :func:`read_trajectory` requires.
+(without stamps: the pose index), through a temporary file and a rename. TUM rows are
+written in stamp order (raw logs deliver scans out of order); two poses with one stamp are a
+ValueError, and stamps must differ as written (9 decimals), as :func:`read_trajectory`
+requires.
 
 Parameters
 ----------
 path : str or os.PathLike
-poses : array_like, shape (N, 4, 4)
-    Rigid transforms (m).
+poses : array_like, shape (N, 4, 4) or (N, 3)
+    Rigid transforms (m), or planar poses x (m), y (m), theta (rad) (as 3D poses at z = 0).
 stamps : array_like, shape (N,), optional
-    Seconds.
+    Seconds, in any order.
 format : {'kitti', 'tum'}
 )doc");
 
@@ -126,8 +164,12 @@ format : {'kitti', 'tum'}
       [](ArrayLike estimate, ArrayLike reference, py::object estimate_stamps,
          py::object reference_stamps, const std::string& align,
          std::optional<double> max_time_diff) {
-        const Trajectory est = trajectoryFrom(estimate, estimate_stamps, "estimate");
-        const Trajectory ref = trajectoryFrom(reference, reference_stamps, "reference");
+        std::vector<std::size_t> est_order, ref_order;
+        const Trajectory est = sortedByStamp(trajectoryFrom(estimate, estimate_stamps, "estimate"),
+                                             "estimate_stamps", &est_order);
+        const Trajectory ref =
+            sortedByStamp(trajectoryFrom(reference, reference_stamps, "reference"),
+                          "reference_stamps", &ref_order);
         // Options that pairing by index would ignore are refused.
         if (estimate_stamps.is_none() != reference_stamps.is_none())
           throw py::value_error(std::string(estimate_stamps.is_none() ? "reference" : "estimate") +
@@ -151,6 +193,8 @@ format : {'kitti', 'tum'}
           py::gil_scoped_release release;
           e = evaluateTrajectory(est, ref, config);
         }
+        for (std::size_t& i : e.pairs.estimate) i = est_order[i];  // the caller's indices
+        for (std::size_t& i : e.pairs.reference) i = ref_order[i];
         py::dict d;
         d["pairs"] =
             py::make_tuple(arrayFrom(asLong(e.pairs.estimate), {py::ssize_t(e.pairs.size())}),
@@ -181,15 +225,15 @@ format : {'kitti', 'tum'}
         py::dict drift;
         drift["path_length"] = e.drift.path_length;
         drift["segments"] = e.drift.segments;
-        drift["translation_percent"] = e.drift.translation_percent;
-        drift["rotation_deg_per_m"] = e.drift.rotation_deg_per_m;
+        drift["translation_percent"] = definedOr(e.drift.translation_percent, e.drift.segments > 0);
+        drift["rotation_deg_per_m"] = definedOr(e.drift.rotation_deg_per_m, e.drift.segments > 0);
         py::list lengths;
         for (const KittiDriftLength& l : e.drift.lengths) {
           py::dict x;
           x["length"] = l.length;
           x["segments"] = l.segments;
-          x["translation_percent"] = l.translation_percent;
-          x["rotation_deg_per_m"] = l.rotation_deg_per_m;
+          x["translation_percent"] = definedOr(l.translation_percent, l.segments > 0);
+          x["rotation_deg_per_m"] = definedOr(l.rotation_deg_per_m, l.segments > 0);
           lengths.append(x);
         }
         drift["lengths"] = lengths;
@@ -205,10 +249,11 @@ paired positions (Umeyama), then the errors.
 
 Parameters
 ----------
-estimate, reference : array_like, shape (N, 4, 4) and (M, 4, 4)
-    Sensor -> world poses (m).
+estimate, reference : array_like, shape (N, 4, 4) and (M, 4, 4), or (N, 3) and (M, 3)
+    Sensor -> world poses (m), or planar poses x (m), y (m), theta (rad).
 estimate_stamps, reference_stamps : array_like, shape (N,) and (M,), optional
-    Seconds.
+    Seconds, in any order (the poses are paired and their RPE taken in stamp order; `pairs`
+    gives the indices of the arrays as given). Two poses with one stamp are a ValueError.
 align : {'none', 'rigid', 'sim'}
 max_time_diff : float, optional
     Largest stamp difference (s) that pairs two poses (default 0.01); only with both stamps.
@@ -218,8 +263,9 @@ Returns
 dict
     pairs (estimate indices, reference indices), paired_by, alignment (mode, rotation (3, 3),
     translation (3,), scale), ate and rpe (translation (K,) m, rotation_deg (K,),
-    translation_stats and rotation_stats: count, rmse, mean, median, std, min, max), drift
-    (path_length m, segments, translation_percent, rotation_deg_per_m, lengths).
+    translation_stats and rotation_stats: count, rmse, mean, median, std, min, max; NaN when
+    count is 0), drift (path_length m, segments, translation_percent, rotation_deg_per_m,
+    lengths; the figures are NaN where there is no segment: a path shorter than 100 m).
 
 Raises
 ------
@@ -265,13 +311,13 @@ InputError
       [](ArrayLike poses, ArrayLike stamps, py::object relations, py::object relation_stamps,
          double max_time_diff, py::object odometry_poses, py::object odometry_stamps) {
         Trajectory t;
-        t.poses = posesFrom(poses, "poses");
+        t.poses = spatialOrPlanarPosesFrom(poses, "poses");
         t.stamps = stampsFrom(stamps, "stamps", t.size());
         Trajectory odo;
         if (odometry_poses.is_none() != odometry_stamps.is_none())
           throw py::value_error("odometry_poses and odometry_stamps go together");
         if (!odometry_poses.is_none()) {
-          odo.poses = posesFrom(odometry_poses.cast<ArrayLike>(), "odometry_poses");
+          odo.poses = spatialOrPlanarPosesFrom(odometry_poses, "odometry_poses");
           odo.stamps = stampsFrom(odometry_stamps.cast<ArrayLike>(), "odometry_stamps", odo.size());
           if (odo.empty()) throw py::value_error("odometry_poses is empty");
         }

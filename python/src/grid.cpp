@@ -1,4 +1,5 @@
 // metricmap.grid: OccupancyGrid's kernel on a numpy array; cells as views of the result.
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -14,10 +15,38 @@ namespace metricmap::python {
 
 namespace {
 
-GridOrigin parseOrigin(const std::string& origin) {
-  if (origin == "cloud-min") return GridOrigin::CloudMinimum;
-  if (origin == "world") return GridOrigin::WorldAligned;
-  throw py::value_error("origin must be 'cloud-min' or 'world', got '" + origin + "'");
+constexpr const char* kOrigins = "'cloud-min', 'world', 'open3d' or a point (x, y, z)";
+
+/// origin= : a convention by name, or the start of cell (0, 0, 0) as three numbers.
+void parseOrigin(const py::object& origin, GridParams& params) {
+  if (py::isinstance<py::str>(origin)) {
+    const std::string name = origin.cast<std::string>();
+    if (name == "cloud-min") {
+      params.origin = GridOrigin::CloudMinimum;
+    } else if (name == "world") {
+      params.origin = GridOrigin::WorldAligned;
+    } else if (name == "open3d") {
+      params.origin = GridOrigin::HalfCellBelowMinimum;
+    } else {
+      throw py::value_error(std::string("origin must be ") + kOrigins + ", got '" + name + "'");
+    }
+    return;
+  }
+  std::vector<double> xyz;
+  try {
+    xyz = origin.cast<std::vector<double>>();
+  } catch (const py::cast_error&) {
+    throw py::type_error(std::string("origin must be ") + kOrigins + ", got " +
+                         std::string(py::str(py::type::of(origin).attr("__name__"))));
+  }
+  if (xyz.size() != 3)
+    throw py::value_error(std::string("origin must be ") + kOrigins + ", got " +
+                          std::to_string(xyz.size()) + " numbers");
+  for (double v : xyz)
+    if (!std::isfinite(v))
+      throw py::value_error("origin must be finite, got " + std::string(py::str(py::repr(origin))));
+  params.origin = GridOrigin::Point;
+  params.origin_point = Eigen::Vector3d(xyz[0], xyz[1], xyz[2]);
 }
 
 py::dict statisticsDict(const GridStatistics& s) {
@@ -55,11 +84,15 @@ py::tuple gridState(const GridResult& r) {
                      l.dims[2], l.origin.x(), l.origin.y(), l.origin.z(), l.cell_size),
       py::make_tuple(st.total_cells, st.occupied_cells, st.empty_cells,
                      st.mean_points_per_occupied_cell, st.points, st.skipped_points),
-      indices, counts, means, first);
+      indices, counts, means, first,
+      r.point_cells.empty()
+          ? py::object(py::none())
+          : py::object(py::array_t<std::int64_t>(static_cast<py::ssize_t>(r.point_cells.size()),
+                                                 r.point_cells.data())));
 }
 
 std::shared_ptr<GridResult> gridFromState(const py::tuple& t) {
-  if (t.size() != 6) throw py::value_error("Grid: not a pickled grid");
+  if (t.size() != 6 && t.size() != 7) throw py::value_error("Grid: not a pickled grid");
   const py::tuple l = t[0], st = t[1];
   if (l.size() != 10 || st.size() != 6) throw py::value_error("Grid: not a pickled grid");
   auto r = std::make_shared<GridResult>();
@@ -91,6 +124,10 @@ std::shared_ptr<GridResult> gridFromState(const py::tuple& t) {
     c.count = counts.at(i);
     c.first_point = static_cast<std::size_t>(first.at(i));
   }
+  if (t.size() == 7 && !t[6].is_none()) {
+    const auto rows = py::array_t<std::int64_t, kC>(t[6]);
+    r->point_cells.assign(rows.data(), rows.data() + rows.size());
+  }
   return r;
 }
 
@@ -101,7 +138,8 @@ bool sameGrid(const GridResult& a, const GridResult& b) {
       p.cell_size != q.cell_size || s.total_cells != t.total_cells ||
       s.occupied_cells != t.occupied_cells || s.empty_cells != t.empty_cells ||
       s.mean_points_per_occupied_cell != t.mean_points_per_occupied_cell || s.points != t.points ||
-      s.skipped_points != t.skipped_points || a.cells.size() != b.cells.size())
+      s.skipped_points != t.skipped_points || a.cells.size() != b.cells.size() ||
+      a.point_cells != b.point_cells)
     return false;
   for (std::size_t i = 0; i < a.cells.size(); ++i) {
     const GridCell &c = a.cells[i], &d = b.cells[i];
@@ -163,6 +201,17 @@ The array properties are read-only views of the cells held by this object; they 
           },
           "(M,) uint64 view: row of the input of each cell's first point.")
       .def_property_readonly(
+          "point_cells",
+          [](py::object self) -> py::object {
+            const auto& r = self.cast<const GridResult&>();
+            if (r.point_cells.empty()) return py::none();
+            return viewOf<std::int64_t>(r.point_cells.data(), {py::ssize_t(r.point_cells.size())},
+                                        {py::ssize_t(sizeof(std::int64_t))}, self);
+          },
+          "(N,) int64 view or None: per input point the row of its cell in the cell arrays "
+          "(numpy's np.unique(..., return_inverse=True)), -1 for a skipped NaN/Inf point; "
+          "None unless grid(..., point_cells=True).")
+      .def_property_readonly(
           "min_index",
           [](const GridResult& r) {
             return py::make_tuple(r.layout.min_index[0], r.layout.min_index[1],
@@ -199,7 +248,8 @@ The array properties are read-only views of the cells held by this object; they 
 
   m.def(
       "grid",
-      [](ArrayLike points, double cell_size, const std::string& origin, unsigned threads) {
+      [](ArrayLike points, double cell_size, const py::object& origin, unsigned threads,
+         bool point_cells) {
         // named as given: 1e39 is not a float, and would be reported as inf
         if (beyondFloatRange(cell_size) || belowFloatRange(cell_size))
           throw py::value_error("cell_size " + formatNumber(cell_size) +
@@ -207,8 +257,10 @@ The array properties are read-only views of the cells held by this object; they 
         validateCellSize(static_cast<float>(cell_size));
         GridParams params;
         params.cell_size = static_cast<float>(cell_size);
-        params.origin = parseOrigin(origin);
+        parseOrigin(origin, params);
+        params.exact_cell_size = cell_size;
         params.threads = threads;
+        params.point_cells = point_cells;
         PointsArray p = pointsFromArray(points, "points");
         auto result = std::make_shared<GridResult>();
         {
@@ -219,7 +271,7 @@ The array properties are read-only views of the cells held by this object; they 
         return result;
       },
       py::arg("points"), py::arg("cell_size") = 1.0f, py::arg("origin") = "cloud-min",
-      py::arg("threads") = 0u, R"doc(
+      py::arg("threads") = 0u, py::kw_only(), py::arg("point_cells") = false, R"doc(
 Bin points into cubic cells: per occupied cell its index, count and mean (OccupancyGrid).
 
 Parameters
@@ -230,11 +282,18 @@ points : array_like, shape (N, 3) or (N, 4)
     Points with a NaN/Inf coordinate are skipped and counted.
 cell_size : float
     Cell edge in metres, finite and > 0.
-origin : {'cloud-min', 'world'}
+origin : {'cloud-min', 'world', 'open3d'} or (x, y, z)
     'cloud-min' (the study's partition): index = floor((p - min) / cell_size);
-    'world' (pcl::VoxelGrid's): index = floor(p * (1 / cell_size)) in float32.
+    'world' (pcl::VoxelGrid's): index = floor(p * (1 / cell_size)) in float32;
+    'open3d' (Open3D's voxel_down_sample): index = floor((p - (min - cell_size / 2)) /
+    cell_size) in float64, so the cells and means are Open3D's;
+    (x, y, z): cell (0, 0, 0) starts at that point, index = floor((p - origin) / cell_size)
+    in float64. `Grid.origin` is where cell (0, 0, 0) starts.
 threads : int
     0 = all hardware threads. The result does not depend on it.
+point_cells : bool
+    Also give each point's cell: `Grid.point_cells`, (N,) int64 rows into the cell arrays
+    (-1 for a skipped point), as np.unique(..., return_inverse=True) gives.
 
 Returns
 -------

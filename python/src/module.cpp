@@ -21,6 +21,7 @@ void initPoseGraph(py::module_& m);
 void initSlam(py::module_& m);
 void initSlam3D(py::module_& m);
 void initEvaluation(py::module_& m);
+void initPoseConversion(py::module_& m);
 }  // namespace metricmap::python
 
 PYBIND11_MODULE(_metricmap, m) {
@@ -45,4 +46,5 @@ PYBIND11_MODULE(_metricmap, m) {
   initSlam(m);
   initSlam3D(m);
   initEvaluation(m);
+  initPoseConversion(m);
 }

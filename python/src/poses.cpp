@@ -38,6 +38,35 @@ std::vector<Eigen::Isometry3d> posesFrom(const py::handle& obj, const char* name
   return out;
 }
 
+std::vector<Pose2D> planarPosesFrom(const py::handle& obj, const char* name, bool allow_single) {
+  auto a = doublesFromArray(obj, name);
+  const bool single = allow_single && a.ndim() == 1 && a.shape(0) == 3;
+  if (!single && (a.ndim() != 2 || a.shape(1) != 3))
+    throw py::value_error(std::string(name) + " must have shape (N, 3): x, y, theta");
+  const std::size_t n = single ? 1 : static_cast<std::size_t>(a.shape(0));
+  if (n == 0) throw py::value_error(std::string(name) + " is empty");
+  std::vector<Pose2D> out(n);
+  const double* d = a.data();
+  for (std::size_t k = 0; k < n; ++k) {
+    out[k] = Pose2D{d[3 * k], d[3 * k + 1], d[3 * k + 2]};
+    if (!std::isfinite(out[k].x) || !std::isfinite(out[k].y) || !std::isfinite(out[k].theta))
+      throw py::value_error(std::string(name) + "[" + std::to_string(k) + "] is not finite");
+  }
+  return out;
+}
+
+std::vector<Eigen::Isometry3d> spatialOrPlanarPosesFrom(const py::handle& obj, const char* name) {
+  auto a = doublesFromArray(obj, name);
+  if (a.ndim() == 2 && a.shape(1) == 3) {
+    std::vector<Eigen::Isometry3d> out;
+    for (const Pose2D& p : planarPosesFrom(a, name)) out.push_back(spatial(p));
+    return out;
+  }
+  if (a.ndim() != 3 || a.shape(1) != 4 || a.shape(2) != 4)
+    throw py::value_error(std::string(name) + " must have shape (N, 4, 4) or (N, 3) (x, y, theta)");
+  return posesFrom(a, name);
+}
+
 std::vector<double> stampsFrom(const py::handle& obj, const char* name, std::size_t n) {
   auto a = doublesFromArray(obj, name);
   if (a.ndim() != 1 || static_cast<std::size_t>(a.shape(0)) != n)

@@ -25,6 +25,15 @@ py::array_t<double> posesArray(const std::vector<Eigen::Isometry3d>& poses);
 std::vector<Eigen::Isometry3d> posesFrom(const py::handle& obj, const char* name,
                                          bool allow_empty = false);
 
+/// \brief An (N, 3) array of finite planar poses x, y, theta (`allow_single`: a (3,) one too).
+/// \throws py::value_error naming `name` and the first bad pose
+std::vector<Pose2D> planarPosesFrom(const py::handle& obj, const char* name,
+                                    bool allow_single = false);
+
+/// \brief Poses given as (N, 4, 4) rigid transforms or (N, 3) planar poses (x, y, theta, as
+/// 3D poses at z = 0).
+std::vector<Eigen::Isometry3d> spatialOrPlanarPosesFrom(const py::handle& obj, const char* name);
+
 /// \brief A 1-D array of `n` finite stamps (seconds). \throws py::value_error
 std::vector<double> stampsFrom(const py::handle& obj, const char* name, std::size_t n);
 

@@ -29,15 +29,19 @@ namespace metricmap::python {
 
 namespace {
 
+/// The figures of no error at all are NaN (numpy's mean of nothing), not 0.
 py::dict statsDict(const ErrorStatistics& s) {
+  const auto figure = [&s](double v) {
+    return s.count > 0 ? v : std::numeric_limits<double>::quiet_NaN();
+  };
   py::dict d;
   d["count"] = s.count;
-  d["rmse"] = s.rmse;
-  d["mean"] = s.mean;
-  d["median"] = s.median;
-  d["std"] = s.stddev;
-  d["min"] = s.min;
-  d["max"] = s.max;
+  d["rmse"] = figure(s.rmse);
+  d["mean"] = figure(s.mean);
+  d["median"] = figure(s.median);
+  d["std"] = figure(s.stddev);
+  d["min"] = figure(s.min);
+  d["max"] = figure(s.max);
   return d;
 }
 

@@ -70,10 +70,42 @@ void checkSnap(double lo, double hi, double cell) {
   }
 }
 
+/// True for the origins computed in double from a start point (Point, HalfCellBelowMinimum).
+bool startsAtPoint(GridOrigin origin) {
+  return origin == GridOrigin::Point || origin == GridOrigin::HalfCellBelowMinimum;
+}
+
+double exactCell(const GridParams& params) {
+  return params.exact_cell_size > 0.0 ? params.exact_cell_size : params.cell_size;
+}
+
+/// Start of cell (0, 0, 0) for the origins that start at a point.
+Eigen::Vector3d startPoint(const Bounds& b, const GridParams& params) {
+  if (params.origin == GridOrigin::Point) return params.origin_point;
+  const double cell = exactCell(params);
+  const Eigen::Vector3d cell3(cell, cell, cell);
+  return Eigen::Vector3d(b.min[0], b.min[1], b.min[2]) - cell3 * 0.5;
+}
+
 GridLayout makeLayout(const Bounds& b, const GridParams& params) {
   GridLayout layout;
   layout.cell_size = params.cell_size;
   const float inv = 1.0f / params.cell_size;
+  if (startsAtPoint(params.origin)) {
+    const double cell = exactCell(params);
+    layout.cell_size = cell;
+    layout.origin = startPoint(b, params);
+    for (int a = 0; a < 3; ++a) {
+      const double lo = std::floor((b.min[a] - layout.origin[a]) / cell);
+      const double hi = std::floor((b.max[a] - layout.origin[a]) / cell);
+      checkAxis(std::fabs(lo), params.cell_size);
+      checkAxis(std::fabs(hi), params.cell_size);
+      layout.min_index[a] = static_cast<std::int64_t>(lo);
+      layout.dims[a] =
+          static_cast<std::uint64_t>(static_cast<std::int64_t>(hi) - layout.min_index[a]) + 1;
+    }
+    return layout;
+  }
   for (int a = 0; a < 3; ++a) {
     if (params.origin == GridOrigin::CloudMinimum) {
       checkSnap(b.min[a], b.max[a], params.cell_size);
@@ -205,6 +237,22 @@ void validateCellSize(float cell_size) {
   }
 }
 
+void validateGridParams(const GridParams& params) {
+  validateCellSize(params.cell_size);
+  if (params.exact_cell_size != 0.0 &&
+      !(std::isfinite(params.exact_cell_size) && params.exact_cell_size > 0.0)) {
+    std::ostringstream os;
+    os << "cell size must be a finite number > 0, got " << params.exact_cell_size;
+    throw std::invalid_argument(os.str());
+  }
+  if (params.origin == GridOrigin::Point && !params.origin_point.allFinite()) {
+    std::ostringstream os;
+    os << "grid origin must be finite, got (" << params.origin_point.x() << ", "
+       << params.origin_point.y() << ", " << params.origin_point.z() << ")";
+    throw std::invalid_argument(os.str());
+  }
+}
+
 GridResult buildGrid(const PointSpan& points, const GridParams& params) {
   GridWorkspace workspace;
   GridResult result;
@@ -214,10 +262,12 @@ GridResult buildGrid(const PointSpan& points, const GridParams& params) {
 
 void buildGrid(const PointSpan& points, const GridParams& params, GridWorkspace& workspace,
                GridResult& result) {
-  validateCellSize(params.cell_size);
+  validateGridParams(params);
   result.layout = GridLayout();
   result.cells.clear();
   result.stats = GridStatistics();
+  result.point_cells.clear();
+  if (params.point_cells) result.point_cells.assign(points.size, -1);
   const unsigned threads = resolveThreads(params.threads, points.size, kPointsPerThread);
   const Bounds bounds = computeBounds(points, threads);
   result.stats.skipped_points = points.size - bounds.finite;
@@ -231,13 +281,15 @@ void buildGrid(const PointSpan& points, const GridParams& params, GridWorkspace&
   const double cell = params.cell_size;
   const float inv = 1.0f / params.cell_size;
   const bool cloud_min = params.origin == GridOrigin::CloudMinimum;
+  const bool at_point = startsAtPoint(params.origin);
+  const double exact = exactCell(params);
   const double mn[3] = {bounds.min[0], bounds.min[1], bounds.min[2]};
   if (points.size > 0xFFFFFFFFull) throw CapacityError("grid: more than 2^32 points");
 
   // Linear cell key of every finite point, then a radix sort: equal keys become runs.
   KeySorter& sorter = workspace.sorter;
   sorter.reset(points.size, bitsFor(result.stats.total_cells));
-  const bool fast = !cloud_min && worldKeysFastApplies(points, L);
+  const bool fast = !cloud_min && !at_point && worldKeysFastApplies(points, L);
   sorter.fillParallel(points.size, threads, [&](std::size_t begin, std::size_t end, auto& sink) {
     if (fast) {
       worldKeysFast(points, begin, end, inv, L, sink);
@@ -248,8 +300,14 @@ void buildGrid(const PointSpan& points, const GridParams& params, GridWorkspace&
       if (!isFinitePoint(p)) continue;
       std::uint64_t k[3];
       for (int a = 0; a < 3; ++a) {
-        k[a] = cloud_min ? snappedIndex(p[a], mn[a], cell)
-                         : static_cast<std::uint64_t>(floorToInt(p[a] * inv) - L.min_index[a]);
+        if (at_point) {
+          const double t = (static_cast<double>(p[a]) - L.origin[a]) / exact;
+          k[a] =
+              static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(t)) - L.min_index[a]);
+        } else {
+          k[a] = cloud_min ? snappedIndex(p[a], mn[a], cell)
+                           : static_cast<std::uint64_t>(floorToInt(p[a] * inv) - L.min_index[a]);
+        }
       }
       sink.push(k[0] + nx * k[1] + nxy * k[2], static_cast<std::uint32_t>(i));
     }
@@ -286,6 +344,13 @@ void buildGrid(const PointSpan& points, const GridParams& params, GridWorkspace&
       accumulateCells(points, sorter, L, cuts[t], cuts[t + 1],
                       [&out](const GridCell& c) { *out++ = c; });
     });
+  }
+  if (params.point_cells) {
+    std::int64_t row = -1;
+    for (std::size_t i = 0; i < n; ++i) {
+      row += i == 0 || sorter.key(i) != sorter.key(i - 1);
+      result.point_cells[sorter.position(i)] = row;
+    }
   }
   GridStatistics& s = result.stats;
   s.points = bounds.finite;

@@ -16,7 +16,13 @@ enum class GridOrigin {
   /// The study's partition: index = floor((p - cloud_min) / cell). Default.
   CloudMinimum,
   /// pcl::VoxelGrid's partition: index = floor(p / cell), computed in float as PCL does.
-  WorldAligned
+  WorldAligned,
+  /// Cell (0, 0, 0) starts at GridParams::origin_point: index = floor((p - origin_point) /
+  /// cell), computed in double.
+  Point,
+  /// Open3D's voxel_down_sample: cell (0, 0, 0) starts half a cell below the cloud's minimum,
+  /// index = floor((p - (min - cell / 2)) / cell), computed in double as Open3D does.
+  HalfCellBelowMinimum
 };
 
 /// \brief OccupancyGrid parameters.
@@ -26,6 +32,13 @@ struct GridParams {
   /// Threads for a build: 0 = all hardware threads, 1 = single-threaded. The cells, counts
   /// and means do not depend on it (bit for bit). Small clouds use fewer threads.
   unsigned threads = 0;
+  /// The cell edge in double for the Point and HalfCellBelowMinimum origins (the value the
+  /// caller gave, before rounding to float); 0 = cell_size.
+  double exact_cell_size = 0.0;
+  /// Start of cell (0, 0, 0) for GridOrigin::Point; finite.
+  Eigen::Vector3d origin_point = Eigen::Vector3d::Zero();
+  /// Fill GridResult::point_cells (one int64 per point).
+  bool point_cells = false;
 };
 
 /// \brief Figures of one grid, as in the study's table.
@@ -60,10 +73,17 @@ struct GridResult {
   GridLayout layout;
   std::vector<GridCell> cells;
   GridStatistics stats;
+  /// When GridParams::point_cells: per point of the input view, the position in `cells` of
+  /// its cell, -1 for a skipped (NaN/Inf) point. Empty otherwise.
+  std::vector<std::int64_t> point_cells;
 };
 
 /// \brief Throws std::invalid_argument unless the cell size is finite and > 0.
 void validateCellSize(float cell_size);
+
+/// \brief Throws std::invalid_argument for a bad cell size (float or exact) or a non-finite
+/// GridOrigin::Point start.
+void validateGridParams(const GridParams& params);
 
 /// \brief Scratch memory of a grid build (defined in grid_kernel.h).
 struct GridWorkspace;
