@@ -14,6 +14,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "arrays.h"
+#include "declared_config.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/slam/slam_2d.h"
 #include "metricmap/slam/slam_2d_parameters.h"
@@ -72,37 +73,8 @@ std::vector<std::string>& configFields() {
 /// One property per declared parameter (slam/slam_2d_parameters.h): names, kinds, docs and
 /// ranges all come from the library's declaration.
 void declaredFields(py::class_<Slam2DConfig>& c) {
-  static std::deque<std::string> docs;  // the docstrings live as long as the module
-  for (const ParameterSpec& spec : slam2DParameterSchema()) {
-    configFields().push_back(spec.name);
-    const std::string name = spec.name;
-    const ParameterKind kind = spec.kind;
-    docs.push_back((spec.unit.empty() ? "" : spec.unit + ": ") + spec.doc + " (" +
-                   parameterRule(spec) + "; default " + spec.default_text + ").");
-    c.def_property(
-        name.c_str(),
-        [name, kind](const Slam2DConfig& s) -> py::object {
-          const double v = slam2DParameterValue(s, name);
-          if (kind == ParameterKind::Switch) return py::bool_(v != 0.0);
-          if (kind == ParameterKind::Count) return py::int_(static_cast<unsigned long long>(v));
-          if (kind == ParameterKind::Integer) return py::int_(static_cast<long long>(v));
-          return py::float_(v);
-        },
-        [name, kind](Slam2DConfig& s, const py::object& v) {
-          const bool is_bool = py::isinstance<py::bool_>(v);
-          if (kind == ParameterKind::Switch) {
-            if (!is_bool) throw py::type_error(name + " must be a bool");
-            return setSlam2DParameterValue(s, name, v.cast<bool>() ? 1.0 : 0.0);
-          }
-          const bool whole = kind != ParameterKind::Real;
-          if (is_bool ||
-              !(py::isinstance<py::int_>(v) || (!whole && py::isinstance<py::float_>(v))))
-            throw py::type_error(name + " must be " + (whole ? "an int" : "a number") + ", got " +
-                                 std::string(py::str(py::type::of(v).attr("__name__"))));
-          setSlam2DParameterValue(s, name, v.cast<double>());
-        },
-        docs.back().c_str());
-  }
+  for (const ParameterSpec& spec : slam2DParameterSchema()) configFields().push_back(spec.name);
+  bindDeclaredFields(c, slam2DParameterSchema(), &slam2DParameterValue, &setSlam2DParameterValue);
 }
 
 }  // namespace
@@ -114,18 +86,7 @@ Parameters of :class:`Slam2D` (slam/slam_2d_config.h), one attribute each, with 
 when a :class:`Slam2D` is made (ValueError naming the first bad one). The final map's
 parameters are the ``map_*`` attributes.
 )doc");
-  c.def(py::init([](py::kwargs kwargs) {
-          Slam2DConfig config;
-          py::object view = py::cast(&config, py::return_value_policy::reference);
-          for (auto item : kwargs) {
-            const std::string key = py::str(item.first);
-            if (key.rfind('_', 0) == 0 || !py::hasattr(view, key.c_str()))
-              throw py::type_error("Slam2DConfig has no parameter '" + key + "'");
-            view.attr(key.c_str()) = item.second;
-          }
-          return config;
-        }),
-        "Slam2DConfig(**kwargs): the defaults, with the named attributes set.");
+  bindKeywordConstructor(c, "Slam2DConfig");
   declaredFields(c);
   m.def(
       "slam2d_parameters", [] { return parameterList(slam2DParameterSchema()); },

@@ -9,6 +9,7 @@
 #include <pybind11/stl.h>
 
 #include "arrays.h"
+#include "declared_config.h"
 #include "metricmap/slam3d/slam3d.h"
 #include "metricmap/slam3d/slam3d_config.h"
 #include "metricmap/slam3d/slam3d_run.h"
@@ -20,32 +21,6 @@
 
 namespace metricmap::python {
 namespace {
-
-void declaredFields(py::class_<Slam3DConfig>& c) {
-  static std::deque<std::string> docs;  // the docstrings live as long as the module
-  for (const ParameterSpec& spec : slam3DParameterSchema()) {
-    const std::string name = spec.name;
-    const ParameterKind kind = spec.kind;
-    docs.push_back((spec.unit.empty() ? "" : spec.unit + ": ") + spec.doc + " (" +
-                   parameterRule(spec) + "; default " + spec.default_text + ").");
-    c.def_property(
-        name.c_str(),
-        [name, kind](const Slam3DConfig& s) -> py::object {
-          const double v = slam3DParameterValue(s, name);
-          if (kind == ParameterKind::Real) return py::float_(v);
-          return py::int_(static_cast<long long>(v));
-        },
-        [name, kind](Slam3DConfig& s, const py::object& v) {
-          const bool whole = kind != ParameterKind::Real;
-          if (py::isinstance<py::bool_>(v) ||
-              !(py::isinstance<py::int_>(v) || (!whole && py::isinstance<py::float_>(v))))
-            throw py::type_error(name + " must be " + (whole ? "an int" : "a number") + ", got " +
-                                 std::string(py::str(py::type::of(v).attr("__name__"))));
-          setSlam3DParameterValue(s, name, v.cast<double>());
-        },
-        docs.back().c_str());
-  }
-}
 
 pcl::PointCloud<pcl::PointXYZ> cloudFrom(const py::handle& obj) {
   const PointsArray a = pointsFromArray(pointsOf(obj), "points", true);
@@ -105,19 +80,8 @@ Parameters of :class:`Slam3D` (slam3d/slam3d_config.h), one attribute each;
 ``Slam3DConfig(loop_radius=5.0, ...)`` sets attributes by name. Each value is range-checked when
 set (ValueError naming it).
 )doc");
-  c.def(py::init([](py::kwargs kwargs) {
-          Slam3DConfig config;
-          py::object view = py::cast(&config, py::return_value_policy::reference);
-          for (auto item : kwargs) {
-            const std::string key = py::str(item.first);
-            if (key.rfind('_', 0) == 0 || !py::hasattr(view, key.c_str()))
-              throw py::type_error("Slam3DConfig has no parameter '" + key + "'");
-            view.attr(key.c_str()) = item.second;
-          }
-          return config;
-        }),
-        "Slam3DConfig(**kwargs): the defaults, with the named attributes set.");
-  declaredFields(c);
+  bindKeywordConstructor(c, "Slam3DConfig");
+  bindDeclaredFields(c, slam3DParameterSchema(), &slam3DParameterValue, &setSlam3DParameterValue);
   c.def("__repr__", [](const Slam3DConfig& s) {
     std::string out = "Slam3DConfig(";
     bool first = true;
