@@ -2,12 +2,14 @@
 
 #include <chrono>
 #include <cmath>
+
 #include <stdexcept>
 
 #include "metricmap/common/memory_budget.h"
 #include "metricmap/localization/global_search_3d.h"
 #include "metricmap/localization/map_alignment_3d.h"
 #include "metricmap/localization/map_places_3d.h"
+#include "metricmap/localization/scan_ground_3d.h"
 #include "metricmap/registration/voxel_downsample.h"
 #include "metricmap/registration/voxel_hash_map.h"
 
@@ -123,10 +125,46 @@ struct Localizer3D::Impl {
     return r;
   }
 
+  /// The prediction's roll and pitch replaced by the scan's ground (a platform that pitches
+  /// and rolls as it moves is not predicted by its last motion); its heading kept.
+  void levelPrediction(const std::vector<Eigen::Vector3d>& scan, Eigen::Isometry3d& pose) const {
+    const ScanGround g =
+        estimateScanGround(scan, config.ground_threshold, config.ground_max_tilt_deg);
+    if (!g.found) return;
+    const Eigen::Vector3d f = pose.linear().col(0), h = g.level.col(0);
+    const double yaw = std::atan2(f.y(), f.x()) - std::atan2(h.y(), h.x());
+    pose.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) * g.level;
+  }
+
+  /// The heading within ±track_yaw_window_deg of the prediction (steps of track_yaw_step_deg)
+  /// under which most of a subsample of the scan lies on the map: a turn the last motion did
+  /// not predict is caught before the ICP, whose basin is narrower.
+  void searchYaw(const std::vector<Eigen::Vector3d>& scan, Eigen::Isometry3d& pose) const {
+    if (config.track_yaw_window_deg <= 0.0) return;
+    std::vector<Eigen::Vector3d> sample;
+    const std::size_t stride = std::max<std::size_t>(1, scan.size() / 400);
+    for (std::size_t i = 0; i < scan.size(); i += stride) sample.push_back(scan[i]);
+    const int steps = static_cast<int>(config.track_yaw_window_deg / config.track_yaw_step_deg);
+    Eigen::Isometry3d best = pose;
+    double best_overlap = -1.0;
+    for (int k = -steps; k <= steps; ++k) {
+      Eigen::Isometry3d p = pose;
+      p.linear() = Eigen::AngleAxisd(k * config.track_yaw_step_deg * M_PI / 180.0,
+                                     Eigen::Vector3d::UnitZ()) *
+                   pose.linear();
+      const double o = mapOverlap(sample, hash, p, config.track_coarse_threshold).overlap -
+                       (k == 0 ? 0.0 : 1e-9 * std::abs(k));
+      if (o > best_overlap) best_overlap = o, best = p;
+    }
+    pose = best;
+  }
+
   Localization3D track(const std::vector<Eigen::Vector3d>& scan) {
     const auto start = std::chrono::steady_clock::now();
     Localization3D r;
-    const Eigen::Isometry3d predicted = have_velocity ? last * velocity : last;
+    Eigen::Isometry3d predicted = have_velocity ? last * velocity : last;
+    levelPrediction(scan, predicted);
+    searchYaw(scan, predicted);
     const MapAlignment3D a =
         alignToMap(scan, hash, predicted, trackParams(config.track_coarse_threshold), &workspace);
     r.score = a.overlap;

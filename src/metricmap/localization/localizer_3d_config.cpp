@@ -55,6 +55,8 @@ void validateLocalizer3DConfig(const Localizer3DConfig& c) {
   positive(c.track_fine_threshold, "track_fine_threshold");
   if (c.track_fine_threshold > c.track_coarse_threshold)
     throw std::invalid_argument("track_fine_threshold must be <= track_coarse_threshold");
+  nonNegative(c.track_yaw_window_deg, "track_yaw_window_deg");
+  positive(c.track_yaw_step_deg, "track_yaw_step_deg");
   count(c.track_iterations, 1, 1000, "track_iterations");
   positive(c.overlap_distance, "overlap_distance");
   share(c.track_min_overlap, "track_min_overlap");

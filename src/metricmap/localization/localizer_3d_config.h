@@ -44,6 +44,8 @@ struct Localizer3DConfig {
   // Tracking.
   double track_coarse_threshold = 1.5;  ///< first ICP stage's correspondence distance (m, > 0)
   double track_fine_threshold = 0.5;    ///< last stage's (m, > 0, <= coarse)
+  double track_yaw_window_deg = 24.0;   ///< headings tried around the prediction (deg, >= 0)
+  double track_yaw_step_deg = 6.0;      ///< their step (deg, > 0)
   int track_iterations = 30;            ///< Gauss-Newton steps per stage (1..1000)
   double overlap_distance = 0.5;        ///< a scan point overlaps within this of the map (m, > 0)
   double track_min_overlap = 0.5;       ///< scans overlapping less are weak ([0, 1])

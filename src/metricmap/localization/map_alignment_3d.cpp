@@ -32,6 +32,8 @@ MapAlignment3D alignToMap(const std::vector<Eigen::Vector3d>& scan, const VoxelH
   icp.max_iterations = p.iterations;
   icp.convergence = 1e-4;
   icp.threshold = p.coarse_threshold;
+  // The fixed map constrains every direction the scan sees; nothing is held at the guess.
+  icp.degeneracy_ratio = 0.0;
   Eigen::Isometry3d pose = alignPointToPoint(scan, map, initial, icp, workspace).pose;
   if (p.fine_threshold < p.coarse_threshold) {
     icp.threshold = p.fine_threshold;
