@@ -32,6 +32,16 @@ std::vector<Eigen::Vector3f> around(const std::vector<Eigen::Vector3f>& map,
 
 }  // namespace
 
+LoopVerification verifyGuess(const std::vector<Eigen::Vector3d>& scan,
+                             const std::vector<Eigen::Vector3f>& map_points,
+                             const Eigen::Isometry3d& guess, const Localizer3DConfig& c) {
+  std::vector<Eigen::Vector3f> query;
+  query.reserve(scan.size());
+  for (const Eigen::Vector3d& s : scan) query.push_back(s.cast<float>());
+  const double crop = c.descriptor.max_radius + c.verify.max_correction;
+  return verifyLoop(query, around(map_points, guess.translation(), crop), guess, c.verify);
+}
+
 GlobalSearch3D searchGlobally(const std::vector<Eigen::Vector3d>& scan,
                               const std::vector<Eigen::Vector3f>& map_points,
                               const std::vector<MapPlace3D>& places, const Localizer3DConfig& c) {
@@ -60,16 +70,12 @@ GlobalSearch3D searchGlobally(const std::vector<Eigen::Vector3d>& scan,
       near = near || (places[i].position - places[j].position).head<2>().norm() < suppress;
     if (!near) chosen.push_back(i);
   }
-  std::vector<Eigen::Vector3f> query;
-  query.reserve(scan.size());
-  for (const Eigen::Vector3d& s : scan) query.push_back(s.cast<float>());
   struct Verified {
     Eigen::Isometry3d pose;
     double score;
     bool accepted;
   };
   std::vector<Verified> verified;
-  const double crop = c.descriptor.max_radius + c.verify.max_correction;
   for (std::size_t i : chosen) {
     const MapPlace3D& place = places[i];
     Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();
@@ -77,8 +83,7 @@ GlobalSearch3D searchGlobally(const std::vector<Eigen::Vector3d>& scan,
     guess.linear() =
         Eigen::AngleAxisd(matches[i].yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() *
         ground.level;
-    const LoopVerification v =
-        verifyLoop(query, around(map_points, place.position, crop), guess, c.verify);
+    const LoopVerification v = verifyGuess(scan, map_points, guess, c);
     verified.push_back({v.relation, v.structure_overlap, v.accepted});
   }
   result.candidates = verified.size();

@@ -13,6 +13,7 @@
 #include "metricmap/localization/localization_status.h"
 #include "metricmap/localization/localizer_3d_config.h"
 #include "metricmap/localization/map_places_3d.h"
+#include "metricmap/slam3d/loop_verification.h"
 
 namespace metricmap {
 
@@ -23,6 +24,12 @@ struct GlobalSearch3D {
   double margin = 0.0;
   std::size_t candidates = 0;  ///< guesses verified
 };
+
+/// \brief The loop verification of slam3d for the guess `guess` (sensor -> map) of `scan`: the
+/// map's points around the guess, ICP from it, overlap tests (config.verify).
+LoopVerification verifyGuess(const std::vector<Eigen::Vector3d>& scan,
+                             const std::vector<Eigen::Vector3f>& map_points,
+                             const Eigen::Isometry3d& guess, const Localizer3DConfig& config);
 
 /// \brief Search `places` of the map `map_points` for `scan` (sensor frame, finite points).
 GlobalSearch3D searchGlobally(const std::vector<Eigen::Vector3d>& scan,

@@ -112,16 +112,20 @@ struct Localizer3D::Impl {
   Localization3D fromInitial(const std::vector<Eigen::Vector3d>& scan) {
     const auto start = std::chrono::steady_clock::now();
     Localization3D r;
-    const MapAlignment3D a =
-        alignToMap(scan, hash, *initial, trackParams(config.verify.coarse_threshold), &workspace);
+    Eigen::Isometry3d guess = *initial;
     initial.reset();
-    r.score = a.overlap;
-    if (a.overlap >= config.track_min_overlap) {
+    levelPrediction(scan, guess);
+    searchYaw(scan, guess);
+    const LoopVerification v = verifyGuess(scan, map_points, guess, config);
+    r.score = v.structure_overlap;
+    if (v.accepted) {
+      const MapAlignment3D a =
+          alignToMap(scan, hash, v.relation, trackParams(config.track_fine_threshold), &workspace);
       r.status = LocalizationStatus::Fixed;
       r.pose = a.pose;
       startTrack(a.pose);
     }
-    stats.track_seconds += secondsSince(start);
+    stats.global_seconds += secondsSince(start);
     return r;
   }
 

@@ -64,8 +64,9 @@ class Localizer3D {
   Localizer3D(const Localizer3D&) = delete;
   Localizer3D& operator=(const Localizer3D&) = delete;
 
-  /// \brief Start from a pose the user knows (base -> map): the next scan is aligned from it
-  /// (at the verification's coarse threshold) instead of searched for.
+  /// \brief Start from a pose the user knows (base -> map): for the next scan it replaces the
+  /// place search (levelled by the scan's ground, its heading searched as in tracking, then the
+  /// same verification); when that fails, the global search takes over.
   /// \throws std::invalid_argument if not finite, not a rotation, or outside the map's box
   /// grown by the descriptor's radius
   void setInitialPose(const Eigen::Isometry3d& pose);

@@ -35,7 +35,9 @@ struct Localizer3DConfig {
 
   // Global search (no pose, or lost).
   int global_candidates = 8;  ///< places with the nearest descriptors verified (>= 1)
-  LoopVerificationParams verify{3.0, 0.6, 1.0, 0.4, 0.5, 0.35, 0.5, 8.0};
+  /// min_structure_overlap 0.8: at the right place 90 % of the structure lies on the map; a
+  /// map of somewhere else reaches about 0.7.
+  LoopVerificationParams verify{3.0, 0.6, 1.0, 0.4, 0.5, 0.8, 0.5, 8.0};
   /// The best verified pose's structure overlap must exceed the best distinct pose's by this.
   double global_min_margin = 0.1;           ///< [0, 1]
   double global_distinct_distance = 3.0;    ///< poses farther apart are distinct (m, > 0)
