@@ -13,6 +13,7 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "localize_3d_command.h"
 #include "localize_report.h"
 #include "metricmap/common/parse_number.h"
 #include "metricmap/common/pose_2d_spatial.h"
@@ -27,6 +28,7 @@
 #include "metricmap/io/trajectory.h"
 #include "metricmap/localization/localize_2d_run.h"
 #include "metricmap/localization/localizer_2d_parameters.h"
+#include "metricmap/localization/point_map_3d.h"
 #include "sequence_options.h"
 #include "set_options.h"
 
@@ -38,8 +40,48 @@ struct LocalizeOptions {
   bool initial_pose_given = false;
   std::string map, initial_pose, out_poses, pose_format = "tum", out_png, format = "table";
   Localizer2DConfig config;
+  Localizer3DConfig config3d;
   std::vector<std::string> set;
 };
+
+/// The 3D run: the options that mean something for a 3D map onto its configuration.
+void run3D(const CLI::App& app, const LocalizeOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  if (!o.set.empty()) throw UsageError("--set names 2D parameters; a 3D map takes none");
+  refuseIgnored(app, "--out-png", false, "with a 3D map (a 2D map's picture)");
+  Localize3DCommand c;
+  c.source = o.source;
+  c.map = o.map;
+  c.out_poses = o.out_poses;
+  c.pose_format = o.pose_format;
+  c.format = o.format;
+  c.config = o.config3d;
+  if (app.count("--max-range") > 0) c.config.max_range = o.config.max_range;
+  if (app.count("--min-score") > 0)
+    c.config.verify.min_structure_overlap = o.config.global_min_score;
+  if (app.count("--min-margin") > 0) c.config.global_min_margin = o.config.global_min_margin;
+  if (app.count("--track-min-score") > 0) c.config.track_min_overlap = o.config.track_min_score;
+  if (app.count("--lost-after") > 0)
+    c.config.lost_after_weak_scans = o.config.lost_after_weak_scans;
+  try {
+    validateLocalizer3DConfig(c.config);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  if (o.initial_pose_given) {
+    std::vector<double> v;
+    try {
+      v = parseDoubleList(o.initial_pose, "--initial-pose");
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+    if (v.size() != 6)
+      throw UsageError("--initial-pose: a 3D map takes x,y,z,roll,pitch,yaw (m, rad), not " +
+                       std::to_string(v.size()) + " numbers");
+    c.initial = poseFromXyzRpy(v);
+  }
+  runLocalize3DCommand(c, start);
+}
 
 /// --set NAME=VALUE onto the configuration, then the whole of it checked.
 /// Each name once, not also given by its own option, the initial pose's windows only with
@@ -165,17 +207,22 @@ void run(const LocalizeOptions& o) {
 void addLocalizeCommand(CLI::App& app) {
   auto o = std::make_shared<LocalizeOptions>();
   CLI::App* sub = app.add_subcommand(
-      "localize", "Find and track a robot in a saved map (2D: a CARMEN log in a map_server map)");
+      "localize",
+      "Find and track a robot in a saved map (2D: a CARMEN log in a map_server map; 3D: "
+      "3D scans in a PCD/PLY/OctoMap map)");
   addSourceOptions(*sub, o->source);
-  sub->add_option("--map", o->map, "The map: a map_server YAML (and the PGM it names)")->required();
+  sub->add_option(
+         "--map", o->map,
+         "The map: a map_server YAML (and the PGM it names), or a 3D map (.pcd, .ply, .bt, .ot)")
+      ->required();
   sub->add_option_function<std::string>(
       "--initial-pose",
       [o](const std::string& v) {
         o->initial_pose = v;
         o->initial_pose_given = true;
       },
-      "x,y,yaw in the map's frame (m, m, rad): searched around it instead of the "
-      "whole map");
+      "x,y,yaw in the map's frame (m, m, rad), or x,y,z,roll,pitch,yaw for a 3D map: "
+      "searched around it instead of the whole map");
   sub->add_option("--out-poses", o->out_poses,
                   "Poses of the localised scans in the map's frame, with the scans' stamps")
       ->check(kOutputFile);
@@ -211,14 +258,22 @@ void addLocalizeCommand(CLI::App& app) {
                   "docs/LOCALIZATION.md)");
   addFormatOption(*sub, o->format, {"table", "json"});
   sub->callback([o, sub] {
-    applySettings(*sub, *o);
     checkSourceOptions(*sub, o->source);
     refuseIgnored(*sub, "--pose-format", !o->out_poses.empty(), "without --out-poses");
+    if (isPointMap3DPath(o->map)) {
+      requireExtension("--out-poses", o->out_poses, {".tum", ".txt"}, "a pose file");
+      RolePaths inputs = sourceInputs(o->source);
+      inputs.push_back({"--map", o->map});
+      requireDistinctFiles(inputs, {{"--out-poses", o->out_poses}});
+      return run3D(*sub, *o);
+    }
+    applySettings(*sub, *o);
     const auto dot = o->map.find_last_of('.');
     const std::string ext = dot == std::string::npos ? "" : o->map.substr(dot);
     if (ext != ".yaml" && ext != ".yml")
       throw UsageError("--map '" + quoteForMessage(o->map) +
-                       "': give the map_server YAML (.yaml or .yml), not its image");
+                       "': give a map_server YAML (.yaml or .yml; not its image) or a 3D map "
+                       "(.pcd, .ply, .bt, .ot)");
     requireExtension("--out-poses", o->out_poses, {".tum", ".txt"}, "a pose file");
     requireExtension("--out-png", o->out_png, {".png"}, "a PNG picture");
     RolePaths inputs = sourceInputs(o->source);

@@ -7,6 +7,7 @@
 
 #include "metricmap/io/output_set.h"
 #include "metricmap/localization/localize_2d_run.h"
+#include "metricmap/localization/localize_3d_run.h"
 
 namespace metricmap::cli {
 
@@ -20,6 +21,11 @@ struct LocalizeTimes {
 /// `outputs` (emit's rule). `frames` are the source's indices of the scans.
 void emitLocalizeReport(const std::string& input, const std::string& map,
                         const std::vector<std::size_t>& frames, const Localize2DRun& run,
+                        const LocalizeTimes& times, const std::string& format, OutputSet& outputs);
+
+/// \brief The same for a 3D run (localize_3d_report.cpp).
+void emitLocalizeReport(const std::string& input, const std::string& map,
+                        const std::vector<std::size_t>& frames, const Localize3DRun& run,
                         const LocalizeTimes& times, const std::string& format, OutputSet& outputs);
 
 }  // namespace metricmap::cli

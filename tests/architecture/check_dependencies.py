@@ -26,8 +26,8 @@ LAYERS = [
     ("readers and writers", ["io"]),
     ("sources", ["datasets"]),
     ("algorithms", ["grid", "octree", "lines", "camera", "registration", "occupancy", "mapping",
-                    "posegraph", "slam", "evaluation", "distance", "localization"]),
-    ("pipelines", ["sequence", "distributed", "slam3d"]),
+                    "posegraph", "slam", "evaluation", "distance"]),
+    ("pipelines", ["sequence", "distributed", "slam3d", "localization"]),
     ("drawing", ["viz"]),
 ]
 
@@ -38,8 +38,7 @@ SAME_LAYER = {
     "mapping": {"grid", "occupancy"},
     "slam": {"mapping", "occupancy", "posegraph"},
     "distance": {"occupancy", "mapping", "grid"},
-    "localization": {"slam", "mapping", "occupancy", "registration", "posegraph", "evaluation",
-                     "distance", "grid"},
+    "localization": {"slam3d", "sequence"},
     "distributed": {"sequence"},
     "slam3d": {"sequence"},
 }

@@ -83,4 +83,25 @@ check "nothing written" test ! -e "$tmp/x.tum" -a ! -e "$tmp/x.txt"
 ln "$tmp/m.pgm" "$tmp/link.txt"
 expect 2 "--map's image" -- "$MM" localize "$log" --map "$tmp/m.yaml" --frames 300 --out-poses "$tmp/link.txt"
 check "the map's image intact" cmp -s "$tmp/m.pgm" "$tmp/link.txt"
+# 3D maps (.pcd, .ply, .bt, .ot): hostile files get one line and exit 1, nothing written.
+mkdir -p "$tmp/scans"
+pcd() {  # pcd FILE N ROWS...: an ascii PCD of N points
+  local f=$1 n=$2; shift 2
+  printf 'VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH %s\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS %s\nDATA ascii\n' "$n" "$n" >"$f"
+  printf '%s\n' "$@" >>"$f"
+}
+pcd "$tmp/scans/000000.pcd" 3 "1 0 0" "0 1 0" "0 0 1"
+pcd "$tmp/nan.pcd" 2 "nan nan nan" "nan 0 1"
+pcd "$tmp/far.pcd" 2 "0 0 0" "3e7 0 0"
+: >"$tmp/empty.ply"
+printf '# Octomap OcTree binary file\nres x\n' >"$tmp/junk.bt"
+for v in "nan.pcd|no finite points" "far.pcd|beyond" "empty.ply|empty.ply" "junk.bt|junk.bt"; do
+  IFS='|' read -r map needle <<<"$v"
+  expect 1 "$needle" -- "$MM" localize "$tmp/scans" --map "$tmp/$map" --out-poses "$tmp/x.tum"
+  check "nothing written for $map" test ! -e "$tmp/x.tum"
+done
+expect 1 "2D laser scans" -- "$MM" localize "$log" --map "$tmp/scans/000000.pcd" --frames 300
+expect 2 "x,y,z,roll,pitch,yaw" -- "$MM" localize "$tmp/scans" --map "$tmp/scans/000000.pcd" \
+  --initial-pose 1,2,3
+expect 2 "--set" -- "$MM" localize "$tmp/scans" --map "$tmp/scans/000000.pcd" --set max_range=5
 finish
