@@ -13,7 +13,27 @@ if [ ! -f "$raw" ] || [ ! -f "$cor" ]; then echo "skip: Radish logs missing"; ex
 # The log up to the first laser line 375 s after the first (stamps: the third field from the end).
 bzcat "$raw" | awk '/^FLASER/ { s = $(NF - 2); if (t0 == "") t0 = s; if (s - t0 > 375) exit } { print }' \
   >"$tmp/cut.clf"
-check "cut log run" sh -c '"$0" slam2d "$1" --out-poses "$2" >/dev/null' "$MM" "$tmp/cut.clf" "$tmp/p.tum"
+check "cut log run" sh -c '"$0" slam2d "$1" --out-poses "$2" --out-graph "$3" >/dev/null' "$MM" \
+  "$tmp/cut.clf" "$tmp/p.tum" "$tmp/g.g2o"
+# The final graph keeps no loop edge above loop_max_chi2 (100): chi2 of every edge between
+# non-consecutive vertices, from the file's poses and information, computed here.
+check "no loop edge of the final graph above chi2 100" /usr/bin/python3 - "$tmp/g.g2o" <<'PY'
+import sys, math, numpy as np
+V, worst, loops = {}, 0.0, 0
+for l in open(sys.argv[1]):
+    t = l.split()
+    if t[0] == 'VERTEX_SE2': V[int(t[1])] = [float(x) for x in t[2:5]]
+    if t[0] != 'EDGE_SE2' or int(t[2]) == int(t[1]) + 1: continue
+    a, b, m = V[int(t[1])], V[int(t[2])], np.array([float(x) for x in t[3:6]])
+    c, s = math.cos(a[2]), math.sin(a[2]); dx, dy = b[0] - a[0], b[1] - a[1]
+    e = m - [c * dx + s * dy, -s * dx + c * dy, b[2] - a[2]]
+    e[2] = math.remainder(e[2], 2 * math.pi)
+    i = [float(x) for x in t[6:12]]
+    info = np.array([[i[0], i[1], i[2]], [i[1], i[3], i[4]], [i[2], i[4], i[5]]])
+    worst, loops = max(worst, e @ info @ e), loops + 1
+print('loop edges', loops, 'largest chi2', worst)
+sys.exit(0 if loops > 0 and worst <= 100 else 1)
+PY
 /usr/bin/python3 - "$tmp/cut.clf" "$cor" "$tmp/p.tum" >"$tmp/rel.txt" <<'PY'
 import sys, gzip, math, numpy as np
 def flaser(lines):  # ranges in cm (the key), the pose after them, the stamp
