@@ -76,6 +76,8 @@ void validateSlam2DConfig(const Slam2DConfig& c) {
 }
 
 struct Slam2D::Impl {
+  enum class Search { Near, Wide, NearAndWide, EndWide, EndNear };
+
   struct Submap {
     std::unique_ptr<LogOddsGrid2D> grid;
     std::size_t anchor = 0;  ///< first node
@@ -184,9 +186,14 @@ struct Slam2D::Impl {
       o.function_tolerance = 1e-6;
     }
     PoseGraphOptimizeResult r = optimize(graph, o);
-    const std::size_t before = loops.size();
-    if (final_round) removeLoopOutliers();
-    if (loops.size() != before) r = optimize(graph, o);
+    // At the end, until no loop edge exceeds loop_max_chi2: removing the worst matches moves
+    // the poses, and an edge that was just below the limit may no longer be.
+    while (final_round) {
+      const std::size_t before = loops.size();
+      removeLoopOutliers();
+      if (loops.size() == before) break;
+      r = optimize(graph, o);
+    }
     stats.optimizations++;
     stats.final_chi2_initial = r.initial_chi2;
     stats.final_chi2 = r.final_chi2;
@@ -198,20 +205,29 @@ struct Slam2D::Impl {
     stats.optimize_seconds += since(t0);
   }
 
-  /// At the end of the log: the nodes no later node will follow (those of the unfinished
-  /// submaps), one in loop_every_n_nodes, searched in the wide window against every finished
-  /// submap in range that ended wide_min_node_gap nodes before them, whether or not loops were
-  /// closed lately. A revisit of a place seen long before, in the last minutes of a log, is
-  /// otherwise closed only if the periodic wide search happens to run there.
-  void searchEnd() {
+  /// Which loop search a node gets. During the run: near, wide, or both. At the end of the log
+  /// the nodes no later node will follow (those of the unfinished submaps), one in
+  /// loop_every_n_nodes, are searched twice, against every finished submap in range that ended
+  /// wide_min_node_gap nodes before them: first in the wide window (EndWide), whether or not
+  /// loops were closed lately, then, after an optimisation has moved them, in the near window
+  /// about their corrected poses (EndNear: every such submap that passes the overlap test, not
+  /// only the nearest few). A revisit of a place seen long before, in the last minutes of a
+  /// log, is otherwise closed only if the periodic wide search happens to run there, and by
+  /// the few matches that one search finds.
+  void searchEnd(Search search) {
     if (active.empty()) return;
     const std::size_t first = submaps[active.front()].anchor;
     for (std::size_t n = first; n < nodes.size(); ++n) {
-      if (n % config.loop_every_n_nodes == 0) searchLoops(n, false, true, true);
+      if (n % config.loop_every_n_nodes == 0) searchLoops(n, search);
     }
   }
 
-  void searchLoops(std::size_t n, bool near, bool wide, bool end = false) {
+  void searchLoops(std::size_t n, Search search) {
+    const bool near =
+        search == Search::Near || search == Search::NearAndWide || search == Search::EndNear;
+    const bool wide =
+        search == Search::Wide || search == Search::NearAndWide || search == Search::EndWide;
+    const bool end = search == Search::EndWide || search == Search::EndNear;
     const auto t0 = Clock::now();
     const Node& node = nodes[n];
     const Pose2D g = globalOf(n);
@@ -237,6 +253,7 @@ struct Slam2D::Impl {
       if (!sub.matcher) continue;
       // Submaps the local chain has just left need no loop edge: it is accurate there.
       if (sub.last_node + config.loop_min_node_gap > n) continue;
+      if (search == Search::EndNear && sub.last_node + config.wide_min_node_gap > n) continue;
       const bool use_wide = wide && lost && sub.last_node + config.wide_min_node_gap <= n;
       if (!near && !use_wide) continue;
       const Pose2D ga = globalOf(sub.anchor), la = nodes[sub.anchor].local;
@@ -254,7 +271,8 @@ struct Slam2D::Impl {
     // The nearest few submaps are enough to tie the node in; searching every one costs.
     std::sort(near_list.begin(), near_list.end(),
               [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
-    if (near_list.size() > config.loop_max_submaps) near_list.resize(config.loop_max_submaps);
+    if (search != Search::EndNear && near_list.size() > config.loop_max_submaps)
+      near_list.resize(config.loop_max_submaps);
     near_list.insert(near_list.end(), wide_list.begin(), wide_list.end());
     for (const Candidate& cand : near_list) {
       const std::size_t s = cand.submap;
@@ -482,7 +500,9 @@ void Slam2D::addScan(const LaserScan& scan, const std::optional<Pose2D>& odometr
   if (n > 0) d.graph.addEdge(n - 1, n, compose(inverse(d.nodes[n - 1].local), pose), d.information);
   d.insertNode(n);
   const bool near = n % c.loop_every_n_nodes == 0, wide = n % c.wide_every_n_nodes == 0;
-  if (near || wide) d.searchLoops(n, near, wide);
+  if (near || wide)
+    d.searchLoops(n, near && wide ? Impl::Search::NearAndWide
+                                  : (near ? Impl::Search::Near : Impl::Search::Wide));
   if (d.loops_since_optimization &&
       d.nodes.size() - d.nodes_at_last_optimization >= c.optimize_every_n_nodes)
     d.optimizeGraph(c.optimize_iterations);
@@ -494,8 +514,13 @@ void Slam2D::finish() {
   d.finished = true;
   if (d.nodes.empty()) throw std::invalid_argument("no scan was added");
   d.final_round = true;
-  d.searchEnd();
+  // Search the end in the wide window, optimise, search it again in the near window about
+  // the corrected poses, optimise.
+  d.searchEnd(Impl::Search::EndWide);
   if (!d.loops.empty()) d.optimizeGraph(d.config.final_iterations);
+  const std::size_t found = d.stats.loops_found;
+  d.searchEnd(Impl::Search::EndNear);
+  if (d.stats.loops_found != found) d.optimizeGraph(d.config.final_iterations);
   const auto t0 = Clock::now();
   d.map = std::make_unique<LogOddsGrid2D>(d.config.map);
   d.map->setMemoryHeldElsewhere(d.heldBytes());
