@@ -165,6 +165,22 @@ An edge i -> j measures x_i⁻¹ x_j. Read with :func:`read_g2o`, or build with
                    samePoseGraph(a.graph2d, b.graph2d) && samePoseGraph(a.graph3d, b.graph3d);
           },
           py::is_operator())
+      .def("__repr__",
+           [](const PyPoseGraph& g) {
+             ObjectGuard guard(g.mutex, "PoseGraph");
+             const std::size_t v =
+                 g.dimension == 2 ? g.graph2d.vertices().size() : g.graph3d.vertices().size();
+             const std::size_t e =
+                 g.dimension == 2 ? g.graph2d.edges().size() : g.graph3d.edges().size();
+             std::size_t loops = 0;
+             if (g.dimension == 2)
+               for (const auto& x : g.graph2d.edges()) loops += x.loop;
+             else
+               for (const auto& x : g.graph3d.edges()) loops += x.loop;
+             return "<metricmap.PoseGraph " + std::to_string(g.dimension) + "D, " +
+                    std::to_string(v) + " vertices, " + std::to_string(e) + " edges (" +
+                    std::to_string(loops) + " loops)>";
+           })
       .def_readonly("dimension", &PyPoseGraph::dimension, "int: 2 or 3.")
       .def_readonly("chained_guess", &PyPoseGraph::chained_guess,
                     "bool: read from a file without VERTEX lines (poses chained from odometry).")
