@@ -87,7 +87,11 @@ void addOdometryCommand(CLI::App& app) {
     checkRangeOptions(*sub, o->ranges);
     checkSourceOptions(*sub, o->source);
     requireDistinctFiles(sourceInputs(o->source), {{"--out-poses", o->out_poses}});
-    requireExtension("--out-poses", o->out_poses, {".txt"}, "pose text");
+    // TUM rows go where a .tum name says they are; KITTI rows in .txt, as poses/NN.txt
+    if (o->pose_format == "tum")
+      requireExtension("--out-poses", o->out_poses, {".txt", ".tum"}, "TUM pose text");
+    else
+      requireExtension("--out-poses", o->out_poses, {".txt"}, "KITTI pose text");
     run(*o);
   });
 }

@@ -1,5 +1,6 @@
 // The 2D SLAM's parts against plain references: branch-and-bound equals the exhaustive search
 // over the same candidates, Gauss-Newton recovers a known pose, the SLAM closes a synthetic loop.
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -325,6 +326,56 @@ TEST(Slam2D, ClosesASyntheticLoopWithDriftingOdometry) {
   EXPECT_LT(sum / static_cast<double>(est.size()), 0.08) << "and within 8 cm on average";
   // The odometry alone ends 1.6 rad off: far from the truth.
   EXPECT_GT(std::hypot(odo.x - truth.back().x, odo.y - truth.back().y), 1.0);
+}
+
+/// Distance from (x, y) to the room's nearest wall or pillar (castRoom's segments).
+double wallDistance(double x, double y) {
+  const double seg[][4] = {{-6, -4, 6, -4},  {6, -4, 6, 4},      {6, 4, -6, 4},
+                           {-6, 4, -6, -4},  {-2, -1, -1, -1},   {-1, -1, -1, 0.5},
+                           {2, 1, 3.5, 1.8}, {3, -2.5, 3, -1.2}, {-4, 2, -3, 3}};
+  double best = 1e9;
+  for (const auto& s : seg) {
+    const double ex = s[2] - s[0], ey = s[3] - s[1];
+    const double t =
+        std::clamp(((x - s[0]) * ex + (y - s[1]) * ey) / (ex * ex + ey * ey), 0.0, 1.0);
+    best = std::min(best, std::hypot(x - s[0] - t * ex, y - s[1] - t * ey));
+  }
+  return best;
+}
+
+// The map so far, before finish(): every occupied cell lies on the room's walls, and with no
+// loop closure (no final optimisation) it is the finished map cell for cell.
+TEST(Slam2D, CurrentMapBeforeFinish) {
+  Slam2DConfig c;
+  c.scans_per_submap = 10;
+  c.loop_min_score = 0.9999;  // no loop closes: finish() does not optimise again
+  Slam2D slam(c);
+  EXPECT_THROW(slam.currentMap(), std::invalid_argument);
+  for (int k = 0; k < 40; ++k) {
+    const Pose2D p{-2.0 + 0.1 * k, 2.0, 0.02 * k};
+    slam.addScan(scanAt(p), p, 0.1 * k);
+  }
+  const LogOddsGrid2D live = slam.currentMap();
+  ASSERT_GT(live.occupiedCells(), 100u);
+  const double r = live.params().resolution;
+  std::size_t occupied = 0;
+  live.forEachKnown([&](std::int64_t i, std::int64_t j, float) {
+    if (live.state(i, j) != CellState::Occupied) return;
+    ++occupied;
+    EXPECT_LT(wallDistance((static_cast<double>(i) + 0.5) * r, (static_cast<double>(j) + 0.5) * r),
+              2.0 * r)
+        << "cell " << i << ", " << j;
+  });
+  EXPECT_EQ(occupied, live.occupiedCells());
+  slam.finish();
+  ASSERT_TRUE(slam.loops().empty());
+  const LogOddsGrid2D& done = slam.map();
+  ASSERT_EQ(done.width(), live.width());
+  ASSERT_EQ(done.height(), live.height());
+  for (std::int64_t k = 0; k < done.width() * done.height(); ++k) {
+    const float a = live.data()[k], b = done.data()[k];
+    EXPECT_TRUE(a == b || (a != a && b != b)) << "cell " << k;
+  }
 }
 
 TEST(Slam2D, FollowsAStalledOdometryAndFastTurns) {

@@ -69,7 +69,7 @@ from ._metricmap import (  # noqa: F401
     write_trajectory,
 )
 from ._study import STUDY_CONFIGS, compare  # noqa: F401
-from . import _metricmap, _open3d
+from . import _arguments, _metricmap, _open3d, _repr
 from ._cell_state import CellState
 from ._open3d import to_open3d  # noqa: F401
 
@@ -77,6 +77,7 @@ assert (_metricmap.UNKNOWN, _metricmap.FREE, _metricmap.OCCUPIED) == tuple(CellS
 UNKNOWN, FREE, OCCUPIED = CellState.UNKNOWN, CellState.FREE, CellState.OCCUPIED
 
 _open3d.install(_metricmap)
+_repr.install(_metricmap)
 
 __all__ = [
     "CellState",
@@ -143,3 +144,5 @@ __all__ = [
     "to_open3d",
     "write_trajectory",
 ]
+
+_arguments.install(globals(), __all__)

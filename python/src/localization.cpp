@@ -121,6 +121,36 @@ A 2D occupancy map (map_server's model): cells of `resolution` m, the lower-left
           "width", [](const Map2D& map) { return map.width; }, "Cells in x.")
       .def_property_readonly(
           "height", [](const Map2D& map) { return map.height; }, "Cells in y.")
+      .def(py::pickle(
+          [](const Map2D& map) {
+            return py::make_tuple(
+                map.width, map.height, map.resolution, map.origin.x, map.origin.y, map.origin.theta,
+                py::bytes(reinterpret_cast<const char*>(map.cells.data()), map.cells.size()));
+          },
+          [](const py::tuple& t) {
+            if (t.size() != 7) throw py::value_error("Map2D: not a pickled map");
+            Map2D map;
+            map.width = t[0].cast<int>();
+            map.height = t[1].cast<int>();
+            map.resolution = t[2].cast<double>();
+            map.origin = Pose2D{t[3].cast<double>(), t[4].cast<double>(), t[5].cast<double>()};
+            const std::string cells = t[6].cast<std::string>();
+            if (map.width < 0 || map.height < 0 ||
+                cells.size() != static_cast<std::size_t>(map.width) * map.height)
+              throw py::value_error("Map2D: not a pickled map");
+            map.cells.assign(cells.begin(), cells.end());
+            return map;
+          }))
+      .def(
+          "__eq__",
+          [](const Map2D& a, const py::object& other) {
+            if (!py::isinstance<Map2D>(other)) return false;
+            const Map2D& b = other.cast<const Map2D&>();
+            return a.width == b.width && a.height == b.height && a.resolution == b.resolution &&
+                   a.origin.x == b.origin.x && a.origin.y == b.origin.y &&
+                   a.origin.theta == b.origin.theta && a.cells == b.cells;
+          },
+          py::is_operator())
       .def("__repr__", [](const Map2D& map) {
         return "Map2D(" + std::to_string(map.width) + " x " + std::to_string(map.height) +
                " cells of " + py::repr(py::float_(map.resolution)).cast<std::string>() + " m)";

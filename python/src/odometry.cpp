@@ -8,6 +8,7 @@
 
 #include "arrays.h"
 #include "metricmap/registration/lidar_odometry.h"
+#include "metricmap/registration/lidar_odometry_config.h"
 #include "metricmap/sequence/sensor_profile.h"
 #include "object_lock.h"
 
@@ -52,28 +53,37 @@ struct PyOdometry {
 void initOdometry(py::module_& m) {
   m.def(
       "sensor_profile",
-      [](ArrayLike points) {
+      [](ArrayLike points, bool statistics) {
         const SensorProfile p = profileScan(points3d(points));
         py::dict d;
-        d["median_range"] = p.median_range;
-        d["p995_range"] = p.p995_range;
+        if (statistics) {
+          d["median_range"] = p.median_range;
+          d["p995_range"] = p.p995_range;
+        }
         d["max_range"] = p.max_range;
         d["min_range"] = p.min_range;
         d["voxel_size"] = p.voxel_size;
         d["coarse_voxel_size"] = p.coarse_voxel_size;
         d["max_threshold"] = p.max_threshold;
-        d["convergence"] = p.convergence;
+        d["convergence"] = p.convergence > 0.0 ? p.convergence : LidarOdometryConfig{}.convergence;
         return d;
       },
-      py::arg("points"), R"doc(
-The range window and voxel `metricmap odometry` picks from a first scan (sequence/sensor_profile).
+      py::arg("points"), py::kw_only(), py::arg("statistics") = false, R"doc(
+The range window and voxel `metricmap odometry` picks from a first scan (sequence/sensor_profile),
+as keyword arguments of :class:`LidarOdometry`: ``LidarOdometry(**sensor_profile(points))``.
+
+Parameters
+----------
+points : array_like, shape (N, 3) or (N, 4)
+statistics : bool
+    Also give the scan's median_range and p995_range (m), the figures the choice is made from
+    (then the dict is no longer only LidarOdometry's arguments).
 
 Returns
 -------
 dict
-    median_range, p995_range, max_range, min_range, voxel_size, coarse_voxel_size,
-    max_threshold, convergence (0: the default's) — pass them to :class:`LidarOdometry`
-    (convergence only when > 0).
+    max_range, min_range, voxel_size, coarse_voxel_size, max_threshold, convergence (the
+    LidarOdometry default where the profile leaves it).
 
 Raises
 ------
@@ -190,7 +200,18 @@ RuntimeError
             ObjectGuard guard(self.mutex, "LidarOdometry");
             self.odometry.reset();
           },
-          "Forget every scan: the next becomes the world again.");
+          "Forget every scan: the next becomes the world again.")
+      .def("__repr__", [](const PyOdometry& self) {
+        ObjectGuard guard(self.mutex, "LidarOdometry");
+        const LidarOdometryConfig& c = self.odometry.config();
+        const auto num = [](double v) { return py::repr(py::float_(v)).cast<std::string>(); };
+        return "<metricmap.LidarOdometry max_range=" + num(c.max_range) +
+               " min_range=" + num(c.min_range) + " voxel_size=" + num(c.voxel_size) +
+               " coarse_voxel_size=" + num(c.coarse_voxel_size) +
+               " max_threshold=" + num(c.max_threshold) + " convergence=" + num(c.convergence) +
+               " deskew=" + (c.deskew ? "True" : "False") + ", " +
+               std::to_string(self.odometry.poses().size()) + " scans registered>";
+      });
 }
 
 }  // namespace metricmap::python

@@ -15,6 +15,7 @@
 #include "metricmap/posegraph/optimize.h"
 #include "object_lock.h"
 #include "posegraph.h"
+#include "posegraph_state.h"
 
 namespace metricmap::python {
 
@@ -133,6 +134,53 @@ An edge i -> j measures x_i⁻¹ x_j. Read with :func:`read_g2o`, or build with
              return g;
            }),
            py::arg("dimension") = 2)
+      .def(py::pickle(
+          [](const PyPoseGraph& g) {
+            ObjectGuard guard(g.mutex, "PoseGraph");
+            return py::make_tuple(
+                g.dimension, g.chained_guess,
+                g.dimension == 2 ? poseGraphState(g.graph2d) : poseGraphState(g.graph3d));
+          },
+          [](const py::tuple& t) {
+            if (t.size() != 3) throw py::value_error("PoseGraph: not a pickled pose graph");
+            PyPoseGraph g;
+            g.dimension = t[0].cast<int>();
+            g.chained_guess = t[1].cast<bool>();
+            if (g.dimension == 2)
+              g.graph2d = poseGraphFrom<Pose2D, 3>(t[2].cast<py::tuple>(), "PoseGraph");
+            else if (g.dimension == 3)
+              g.graph3d = poseGraphFrom<Pose3D, 6>(t[2].cast<py::tuple>(), "PoseGraph");
+            else
+              throw py::value_error("PoseGraph: not a pickled pose graph");
+            return g;
+          }))
+      .def(
+          "__eq__",
+          [](const PyPoseGraph& a, const py::object& other) {
+            if (!py::isinstance<PyPoseGraph>(other)) return false;
+            const auto& b = other.cast<const PyPoseGraph&>();
+            if (&a == &b) return true;
+            ObjectGuard ga(a.mutex, "PoseGraph"), gb(b.mutex, "PoseGraph");
+            return a.dimension == b.dimension && a.chained_guess == b.chained_guess &&
+                   samePoseGraph(a.graph2d, b.graph2d) && samePoseGraph(a.graph3d, b.graph3d);
+          },
+          py::is_operator())
+      .def("__repr__",
+           [](const PyPoseGraph& g) {
+             ObjectGuard guard(g.mutex, "PoseGraph");
+             const std::size_t v =
+                 g.dimension == 2 ? g.graph2d.vertices().size() : g.graph3d.vertices().size();
+             const std::size_t e =
+                 g.dimension == 2 ? g.graph2d.edges().size() : g.graph3d.edges().size();
+             std::size_t loops = 0;
+             if (g.dimension == 2)
+               for (const auto& x : g.graph2d.edges()) loops += x.loop;
+             else
+               for (const auto& x : g.graph3d.edges()) loops += x.loop;
+             return "<metricmap.PoseGraph " + std::to_string(g.dimension) + "D, " +
+                    std::to_string(v) + " vertices, " + std::to_string(e) + " edges (" +
+                    std::to_string(loops) + " loops)>";
+           })
       .def_readonly("dimension", &PyPoseGraph::dimension, "int: 2 or 3.")
       .def_readonly("chained_guess", &PyPoseGraph::chained_guess,
                     "bool: read from a file without VERTEX lines (poses chained from odometry).")

@@ -204,13 +204,41 @@ count from the end) and iteration give :class:`Scan` objects, read one at a time
       .def("__len__", [](const PySource& s) { return s.source->size(); })
       .def(
           "__getitem__",
-          [](PySource& s, py::ssize_t i) {
-            const std::size_t k = checkedIndex(s, i);
+          [](PySource& s, const py::object& index) -> py::object {
+            if (py::isinstance<py::slice>(index)) {
+              // A slice reads its scans now, as a list (frames= selects lazily in run functions)
+              py::ssize_t start = 0, stop = 0, step = 0, length = 0;
+              if (!index.cast<py::slice>().compute(static_cast<py::ssize_t>(s.source->size()),
+                                                   &start, &stop, &step, &length))
+                throw py::error_already_set();
+              py::list out;
+              for (py::ssize_t n = 0; n < length; ++n) {
+                const auto k = static_cast<std::size_t>(start + n * step);
+                ObjectGuard guard(s.mutex, "ScanSource");
+                std::unique_ptr<Scan> scan;
+                {
+                  py::gil_scoped_release release;
+                  scan = std::make_unique<Scan>(s.source->scan(k));
+                }
+                out.append(py::cast(std::move(scan)));
+              }
+              return std::move(out);
+            }
+            if (!py::isinstance<py::int_>(index) || py::isinstance<py::bool_>(index))
+              throw py::type_error("ScanSource indices must be integers or slices, got " +
+                                   std::string(py::str(py::type::of(index).attr("__name__"))));
+            const std::size_t k = checkedIndex(s, index.cast<py::ssize_t>());
             ObjectGuard guard(s.mutex, "ScanSource");
-            py::gil_scoped_release release;
-            return std::make_unique<Scan>(s.source->scan(k));
+            std::unique_ptr<Scan> scan;
+            {
+              py::gil_scoped_release release;
+              scan = std::make_unique<Scan>(s.source->scan(k));
+            }
+            return py::cast(std::move(scan));
           },
-          py::arg("index"))
+          py::arg("index"),
+          "source[i] -> Scan (negative i counts from the end); source[a:b:c] -> list of Scan, "
+          "read now.")
       .def_property_readonly(
           "info", [](const PySource& s) { return infoDict(s.source->info()); },
           "dict: kind ('kitti', 'folder', 'carmen', 'bag'), path, sensor_to_base (4, 4) float64, "

@@ -77,6 +77,18 @@ void declaredFields(py::class_<Slam2DConfig>& c) {
   bindDeclaredFields(c, slam2DParameterSchema(), &slam2DParameterValue, &setSlam2DParameterValue);
 }
 
+/// `f` of the finished map, or of the map so far of a running SLAM (built now, without the GIL).
+template <typename F>
+auto withMap(const PySlam& p, F&& f) {
+  if (p.finished()) return f(*p.result->map);
+  std::optional<LogOddsGrid2D> live;
+  {
+    py::gil_scoped_release release;
+    live.emplace(p.slam->currentMap());
+  }
+  return f(*live);
+}
+
 }  // namespace
 
 void initSlam(py::module_& m) {
@@ -299,10 +311,11 @@ CapacityError
           "map",
           [](const PySlam& p) {
             ObjectGuard guard(p.mutex, "Slam2D");
-            return mapDict(*p.finishedResult().map);
+            return withMap(p, [](const LogOddsGrid2D& g) { return mapDict(g); });
           },
           R"doc(
-The final map (after finish): dict with log_odds (H, W) float32 (row r, column c is the cell
+The map: after finish the final one; before, the map so far, built now as finish() builds
+it from every node at its current estimate (without the final optimisation). A dict with log_odds (H, W) float32 (row r, column c is the cell
 (min_i + c, min_j + r) of `resolution` m, spanning [i r, (i+1) r) x [j r, (j+1) r); NaN
 unknown), min_i, min_j, resolution, occupied_cells, known_cells.
 )doc")
@@ -310,25 +323,28 @@ unknown), min_i, min_j, resolution, occupied_cells, known_cells.
           "map_image",
           [](const PySlam& p, const std::string& kind) {
             ObjectGuard guard(p.mutex, "Slam2D");
-            const LogOddsGrid2D& g = *p.finishedResult().map;
-            if (kind == "trinary") return mapServerDict(g.trinaryImage());
-            if (kind == "probability") return mapServerDict(g.probabilityImage());
-            throw py::value_error("kind must be 'trinary' or 'probability', got '" + kind + "'");
+            if (kind != "trinary" && kind != "probability")
+              throw py::value_error("kind must be 'trinary' or 'probability', got '" + kind + "'");
+            return withMap(p, [&kind](const LogOddsGrid2D& g) {
+              return mapServerDict(kind == "trinary" ? g.trinaryImage() : g.probabilityImage());
+            });
           },
           py::arg("kind") = "trinary", R"doc(
 The map as map_server sees it: dict with image (H, W) uint8 (row 0 at the top; trinary:
 occupied 0, free 254, unknown 205; probability: 255 (1 - p)), resolution, origin (x, y of the
-lower-left corner, m), mode.
+lower-left corner, m), mode. Before finish: of the map so far (see :meth:`map`).
 )doc")
       .def(
           "write_map",
           [](const PySlam& p, const std::filesystem::path& path, const std::string& kind) {
             ObjectGuard guard(p.mutex, "Slam2D");
-            const LogOddsGrid2D& g = *p.finishedResult().map;
             if (kind != "trinary" && kind != "probability")
               throw py::value_error("kind must be 'trinary' or 'probability', got '" + kind + "'");
-            writeMapImage(path.string(),
-                          kind == "trinary" ? g.trinaryImage() : g.probabilityImage());
+            withMap(p, [&](const LogOddsGrid2D& g) {
+              writeMapImage(path.string(),
+                            kind == "trinary" ? g.trinaryImage() : g.probabilityImage());
+              return 0;
+            });
           },
           py::arg("path"), py::arg("kind") = "trinary",
           "Write the map as map_server files: `path` (.pgm) and the .yaml beside it (what "

@@ -82,6 +82,30 @@ set (ValueError naming it).
 )doc");
   bindKeywordConstructor(c, "Slam3DConfig");
   bindDeclaredFields(c, slam3DParameterSchema(), &slam3DParameterValue, &setSlam3DParameterValue);
+  c.def(py::pickle(
+      [](const Slam3DConfig& s) {
+        py::dict d;
+        for (const std::string& n : slam3DParameterNames())
+          d[n.c_str()] = slam3DParameterValue(s, n);
+        return d;
+      },
+      [](const py::dict& d) {
+        Slam3DConfig config;
+        for (auto item : d)
+          setSlam3DParameterValue(config, item.first.cast<std::string>(),
+                                  item.second.cast<double>());
+        return config;
+      }));
+  c.def(
+      "__eq__",
+      [](const Slam3DConfig& a, const py::object& other) {
+        if (!py::isinstance<Slam3DConfig>(other)) return false;
+        const Slam3DConfig& b = other.cast<const Slam3DConfig&>();
+        for (const std::string& n : slam3DParameterNames())
+          if (slam3DParameterValue(a, n) != slam3DParameterValue(b, n)) return false;
+        return true;
+      },
+      py::is_operator());
   c.def("__repr__", [](const Slam3DConfig& s) {
     std::string out = "Slam3DConfig(";
     bool first = true;

@@ -5,6 +5,8 @@
 
 #include <pybind11/stl.h>
 
+#include "posegraph_state.h"
+
 namespace metricmap::python {
 
 namespace {
@@ -25,58 +27,6 @@ std::vector<Pose2D> posesFrom(const py::handle& obj) {
   std::vector<Pose2D> out;
   for (py::ssize_t k = 0; k < a.shape(0); ++k) out.push_back({a.at(k, 0), a.at(k, 1), a.at(k, 2)});
   return out;
-}
-
-py::tuple graphState(const PoseGraph2D& g) {
-  std::vector<std::int64_t> ids, fixed, ends, loop;
-  std::vector<Pose2D> poses, measurements;
-  std::vector<double> information;
-  for (const auto& v : g.vertices()) {
-    ids.push_back(v.id);
-    fixed.push_back(v.fixed ? 1 : 0);
-    poses.push_back(v.pose);
-  }
-  for (const auto& e : g.edges()) {
-    ends.insert(ends.end(), {static_cast<std::int64_t>(e.from), static_cast<std::int64_t>(e.to)});
-    loop.push_back(e.loop ? 1 : 0);
-    measurements.push_back(e.measurement);
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) information.push_back(e.information(r, c));
-  }
-  const py::ssize_t v = py::ssize_t(ids.size()), e = py::ssize_t(loop.size());
-  return py::make_tuple(arrayFrom(ids, {v}), posesOf(poses), arrayFrom(fixed, {v}),
-                        arrayFrom(ends, {e, 2}), posesOf(measurements),
-                        arrayFrom(information, {e, 3, 3}), arrayFrom(loop, {e}));
-}
-
-PoseGraph2D graphFrom(const py::tuple& t) {
-  if (t.size() != 7) notAState();
-  const auto ids = py::array_t<std::int64_t, kC>(t[0]);
-  const std::vector<Pose2D> poses = posesFrom(t[1]);
-  const auto fixed = py::array_t<std::int64_t, kC>(t[2]);
-  const auto ends = py::array_t<std::int64_t, kC>(t[3]);
-  const std::vector<Pose2D> measurements = posesFrom(t[4]);
-  const auto information = py::array_t<double, kC>(t[5]);
-  const auto loop = py::array_t<std::int64_t, kC>(t[6]);
-  const py::ssize_t v = ids.size(), e = loop.size();
-  if (py::ssize_t(poses.size()) != v || fixed.size() != v || ends.size() != 2 * e ||
-      py::ssize_t(measurements.size()) != e || information.size() != 9 * e)
-    notAState();
-  PoseGraph2D g;
-  for (py::ssize_t k = 0; k < v; ++k) {
-    g.addVertex(ids.data()[k], poses[static_cast<std::size_t>(k)]);
-    g.setFixed(static_cast<std::size_t>(k), fixed.data()[k] != 0);
-  }
-  for (py::ssize_t k = 0; k < e; ++k) {
-    PoseGraph2D::Information info;
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) info(r, c) = information.data()[9 * k + 3 * r + c];
-    const std::int64_t from = ends.data()[2 * k], to = ends.data()[2 * k + 1];
-    if (from < 0 || to < 0) notAState();
-    g.addEdge(static_cast<std::size_t>(from), static_cast<std::size_t>(to),
-              measurements[static_cast<std::size_t>(k)], info, loop.data()[k] != 0);
-  }
-  return g;
 }
 
 py::tuple statsState(const Slam2DStats& s) {
@@ -154,8 +104,8 @@ py::tuple slamState(const PySlam& p) {
     loops.append(py::make_tuple(l.node, l.submap, l.anchor, l.score, l.edge));
   return py::make_tuple(py::cast(r.config), posesOf(r.trajectory),
                         arrayFrom(p.stamps, {py::ssize_t(p.stamps.size())}),
-                        arrayFrom(nodes, {py::ssize_t(nodes.size())}), loops, graphState(r.graph),
-                        statsState(r.stats), gridState(*r.map));
+                        arrayFrom(nodes, {py::ssize_t(nodes.size())}), loops,
+                        poseGraphState(r.graph), statsState(r.stats), gridState(*r.map));
 }
 
 std::unique_ptr<PySlam> slamFromState(const py::tuple& t) {
@@ -173,7 +123,7 @@ std::unique_ptr<PySlam> slamFromState(const py::tuple& t) {
     r->loops.push_back({e[0].cast<std::size_t>(), e[1].cast<std::size_t>(),
                         e[2].cast<std::size_t>(), e[3].cast<double>(), e[4].cast<std::size_t>()});
   }
-  r->graph = graphFrom(t[5].cast<py::tuple>());
+  r->graph = poseGraphFrom<Pose2D, 3>(t[5].cast<py::tuple>(), "Slam2D");
   r->stats = statsFrom(t[6].cast<py::tuple>());
   r->map = gridFrom(t[7].cast<py::tuple>());
   auto p = std::make_unique<PySlam>();

@@ -37,7 +37,7 @@ def test_poses_equal_the_cli(cli, data, tmp_path):
 
 def test_profile_of_a_kitti_scan(data):
     pts = mm.read_points(str(data / "kitti_odometry_00/sequences/00/velodyne/000000.bin"))
-    p = mm.sensor_profile(pts)
+    p = mm.sensor_profile(pts, statistics=True)
     assert 10 <= p["max_range"] <= 100 and 0.1 <= p["voxel_size"] <= 1.0
     r = np.linalg.norm(pts[:, :3].astype(np.float64), axis=1)
     assert p["median_range"] == pytest.approx(np.median(r[r > 0]), rel=1e-3)

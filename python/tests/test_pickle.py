@@ -101,3 +101,90 @@ def test_a_running_slam2d_does_not_pickle():
     s.add_scan([0.0, 0.1], [1.0, 1.0])
     with pytest.raises(TypeError, match="finish"):
         pickle.dumps(s)
+
+
+def graph_arrays(g):
+    e = g.edges()
+    return [g.poses, g.ids, g.fixed] + [e[k] for k in sorted(e)]
+
+
+@pytest.mark.parametrize("path", ["2d", "3d"])
+def test_pose_graph(data, tmp_path, path):
+    rng = np.random.default_rng(5)
+    if path == "2d":
+        g = mm.PoseGraph(2)
+        for k in range(12):
+            g.add_vertex(100 + k, [k + rng.normal(0, 0.1), rng.normal(0, 0.1), rng.normal(0, 0.05)])
+        for k in range(11):
+            g.add_edge(k, k + 1, [1.0, 0.0, 0.0], np.diag([50.0, 50.0, 200.0]))
+        g.add_edge(0, 11, [11.0, 0.0, 0.0], np.eye(3) * 10, loop=True)
+    else:
+        g = mm.PoseGraph(3)
+        for k in range(8):
+            g.add_vertex(k, [k, rng.normal(0, 0.1), 0.0, 0.0, 0.0, 0.0, 1.0])
+        for k in range(7):
+            g.add_edge(k, k + 1, [1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0], np.eye(6))
+    back = round_trip(g)
+    assert back == g and back.dimension == g.dimension and back.chained_guess == g.chained_guess
+    assert back.to_g2o() == g.to_g2o()
+    for a, b in zip(graph_arrays(back), graph_arrays(g)):
+        np.testing.assert_array_equal(a, b)
+    # the loaded graph optimises as the original does
+    ra, rb = g.optimize(), back.optimize()
+    ra.pop("seconds"), rb.pop("seconds")
+    assert ra == rb
+    np.testing.assert_array_equal(g.poses, back.poses)
+    assert copy.deepcopy(g) == g and g != mm.PoseGraph(g.dimension)
+
+
+def test_pose_graph_read_from_g2o_pickles(tmp_path):
+    text = "VERTEX_SE2 0 0 0 0\nVERTEX_SE2 1 1 0 0\nEDGE_SE2 0 1 1 0 0 1 0 0 1 0 1\n"
+    (tmp_path / "g.g2o").write_text(text)
+    g = mm.read_g2o(tmp_path / "g.g2o")
+    assert round_trip(g) == g and round_trip(g).to_g2o() == g.to_g2o()
+
+
+def test_map2d(tmp_path):
+    img = np.full((6, 9), 205, np.uint8)
+    img[1:3, 2:7] = 254
+    img[4, 1] = 0
+    (tmp_path / "m.pgm").write_bytes(b"P5\n9 6\n255\n" + img.tobytes())
+    (tmp_path / "m.yaml").write_text("image: m.pgm\nresolution: 0.25\norigin: [1.5, -2.0, 0.3]\n"
+                                     "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n")
+    m = mm.read_map(tmp_path / "m.yaml")
+    back = round_trip(m)
+    assert back == m
+    np.testing.assert_array_equal(back.cells, m.cells)
+    # map_server's reading of the image, bottom row first: 0 (black) occupied, 254 free
+    want = np.where(img[::-1] == 0, 100, np.where(img[::-1] == 254, 0, -1))
+    np.testing.assert_array_equal(back.cells, want)
+    assert (back.resolution, back.origin, back.width, back.height) == (0.25, (1.5, -2.0, 0.3), 9, 6)
+
+
+def test_slam3d_config():
+    c = mm.Slam3DConfig(loop_radius=7.5)
+    back = round_trip(c)
+    assert back == c and back != mm.Slam3DConfig() and back.loop_radius == 7.5
+    assert copy.deepcopy(c) == c
+
+
+def test_live_map_before_finish(data):
+    source = mm.open_scan_source(data.joinpath(*INTEL))
+    config = mm.Slam2DConfig(loop_min_score=0.9999)  # no loop closes: finish() adds no optimisation
+    s = mm.Slam2D(config, sensor_to_base=source.info["sensor_to_base"])
+    with pytest.raises(ValueError, match="no scan was added"):
+        s.map()
+    for k in range(120):
+        s.add_scan(*source[k].laser, odometry=source[k].odometry, stamp=source[k].stamp)
+    live = s.map()
+    image = s.map_image()
+    assert live["occupied_cells"] > 0
+    s.finish()
+    assert len(s.loops) == 0
+    done = s.map()
+    np.testing.assert_array_equal(live.pop("log_odds"), done.pop("log_odds"))
+    assert live == done
+    np.testing.assert_array_equal(image["image"], s.map_image()["image"])
+    # and the run function's finished map over the same scans
+    run = mm.run_slam2d(source, frames=range(120), config=config)
+    np.testing.assert_array_equal(run.map()["log_odds"], s.map()["log_odds"])

@@ -50,6 +50,7 @@ cases=(
   "2|--plot|compare $bun --plot $o/p.jpg"
   # text: the poses file, the study table in the format --format names
   "2|--out-poses|$kit --out-poses $o/p.pcd"
+  "2|--out-poses|odometry $k --frames 0,1 --out-poses $o/p.tum"
   "2|--out|compare $bun --format csv --out $o/s.json"
   "2|--out|compare $bun --format json --out $o/s.csv"
   "2|--out|compare $bun --format markdown --out $o/s.png"
@@ -64,6 +65,10 @@ check "occupancy writes .bt, .ot, .pcd, .pgm, .png" bash -c \
 check "kitti writes .pcd, .pgm, .txt, .ot" bash -c \
   "'$MM' $kit --out-cloud '$o/k.pcd' --out-map '$o/k.pgm' --out-poses '$o/k.txt' --occupancy-resolution 0.5 --out-octomap '$o/k.ot' >/dev/null &&
    '$MM' info '$o/k.pcd' >/dev/null"
+check "odometry writes TUM rows to .tum as to .txt" bash -c \
+  "'$MM' odometry $k --frames 0,1 --pose-format tum --out-poses '$o/p.tum' >/dev/null &&
+   '$MM' odometry $k --frames 0,1 --pose-format tum --out-poses '$o/p.txt' >/dev/null &&
+   cmp '$o/p.tum' '$o/p.txt'"
 check "grid and compare write .pcd, .csv, .md" bash -c \
   "'$MM' grid '$bun' --cell-size 0.01 --out '$o/g.pcd' --cells '$o/g.csv' >/dev/null &&
    '$MM' compare '$bun' --format markdown --out '$o/s.md' && '$MM' compare '$bun' --out '$o/s.txt'"

@@ -522,18 +522,26 @@ void Slam2D::finish() {
   d.searchEnd(Impl::Search::EndNear);
   if (d.stats.loops_found != found) d.optimizeGraph(d.config.final_iterations);
   const auto t0 = Clock::now();
-  d.map = std::make_unique<LogOddsGrid2D>(d.config.map);
-  d.map->setMemoryHeldElsewhere(d.heldBytes());
+  d.map = std::make_unique<LogOddsGrid2D>(currentMap());
+  d.stats.map_seconds += since(t0);
+}
+
+LogOddsGrid2D Slam2D::currentMap() const {
+  const Impl& d = *impl_;
+  if (d.map) return *d.map;
+  if (d.nodes.empty()) throw std::invalid_argument("no scan was added: there is no map yet");
+  LogOddsGrid2D map(d.config.map);
+  map.setMemoryHeldElsewhere(d.heldBytes());
   std::vector<Eigen::Vector2f> ends;
   for (std::size_t n = 0; n < d.nodes.size(); ++n) {
     const Pose2D g = d.globalOf(n);
     ends.clear();
     for (const Eigen::Vector2f& e : d.nodes[n].ends) ends.push_back(apply(g, e));
-    d.map->insertScan(
+    map.insertScan(
         apply(g, Eigen::Vector2f(static_cast<float>(d.sensor.x), static_cast<float>(d.sensor.y))),
         ends);
   }
-  d.stats.map_seconds += since(t0);
+  return map;
 }
 
 std::vector<Pose2D> Slam2D::trajectory() const {

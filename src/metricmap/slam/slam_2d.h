@@ -94,6 +94,10 @@ class Slam2D {
   std::vector<Eigen::Vector2d> submapCentres() const;
   /// \brief The map rebuilt from every node (after finish). \throws std::logic_error before
   const LogOddsGrid2D& map() const;
+  /// \brief The map so far: built as finish() builds it, from every node at its current
+  /// estimate (before finish: without the final optimisation); after finish, a copy of map().
+  /// \throws std::invalid_argument before any scan; CapacityError beyond the memory budget
+  LogOddsGrid2D currentMap() const;
   const Slam2DStats& stats() const;
   const Slam2DConfig& config() const;
 
