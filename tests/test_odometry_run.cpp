@@ -11,6 +11,13 @@
 #include "metricmap/exceptions.h"
 #include "metricmap/io/cloud_reader.h"
 #include "metricmap/sequence/odometry_run.h"
+#include "shared_data.h"
+
+#include <pcl/ModelCoefficients.h>
+#include <pcl/common/transforms.h>
+#include <pcl/sample_consensus/method_types.h>
+#include <pcl/sample_consensus/model_types.h>
+#include <pcl/segmentation/sac_segmentation.h>
 
 namespace {
 
@@ -87,4 +94,82 @@ TEST(OdometryRun, RefusesFramesOutOfOrderOrPastTheEnd) {
   EXPECT_THROW(metricmap::runOdometry(*source, options), std::invalid_argument);
   options.frames = {0, 40};
   EXPECT_THROW(metricmap::runOdometry(*source, options), metricmap::InputError);
+}
+
+namespace {
+
+const std::string kNclt = std::string(METRICMAP_SHARED_DATA_DIR) + "/nclt_2013_01_10_keyframes";
+
+// The plane of the points of `cloud` below `below` (z), by PCL's RANSAC around z.
+Eigen::Vector3d floorNormal(const pcl::PointCloud<pcl::PointXYZ>& cloud, double below) {
+  auto low = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  for (const auto& p : cloud)
+    if (std::isfinite(p.z) && p.z < below) low->push_back(p);
+  pcl::SACSegmentation<pcl::PointXYZ> seg;
+  seg.setOptimizeCoefficients(true);
+  seg.setModelType(pcl::SACMODEL_PERPENDICULAR_PLANE);
+  seg.setMethodType(pcl::SAC_RANSAC);
+  seg.setAxis(Eigen::Vector3f::UnitZ());
+  seg.setEpsAngle(static_cast<float>(30.0 * M_PI / 180.0));
+  seg.setDistanceThreshold(0.05);
+  seg.setInputCloud(low);
+  pcl::PointIndices inliers;
+  pcl::ModelCoefficients c;
+  seg.segment(inliers, c);
+  EXPECT_GT(inliers.indices.size(), 200u);
+  Eigen::Vector3d n(c.values.at(0), c.values.at(1), c.values.at(2));
+  return n.normalized();
+}
+
+}  // namespace
+
+TEST(LevelFrame, UpOfNcltKeyframesAgreesWithTheReferenceWithinOneDegree) {
+  SKIP_WITHOUT_SHARED_DATA(kNclt);
+  auto source = metricmap::openScanSource(kNclt);
+  const auto& ref = source->info().reference.poses;
+  for (std::size_t k : {0u, 200u, 400u, 600u, 800u, 1000u}) {
+    const metricmap::Scan scan = source->scan(k);
+    const metricmap::UpEstimate up = metricmap::estimateUp(metricmap::toPoints3d(scan.points));
+    // The reference's up (local ENU z) in the keyframe's body frame.
+    const Eigen::Vector3d ref_up = ref[k].linear().transpose() * Eigen::Vector3d::UnitZ();
+    EXPECT_LT(angleDeg(Eigen::Quaterniond::FromTwoVectors(up.up, ref_up).toRotationMatrix()), 1.0)
+        << "keyframe " << k;
+  }
+}
+
+TEST(LevelFrame, TiltedHandCarriedScannerGivesALevelFloor) {
+  SKIP_WITHOUT_SHARED_DATA(kBalm);
+  auto source = metricmap::openScanSource(kBalm);
+  metricmap::OdometryRunOptions options;  // level world by default
+  options.config.threads = 1;
+  options.frames = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
+  const metricmap::OdometryRun run = metricmap::runOdometry(*source, options);
+  ASSERT_EQ(run.world, metricmap::WorldFrame::Level);
+  ASSERT_TRUE(run.up.has_value());
+  // The scanner is held well off level: the first scan's floor is tilted in its frame.
+  const double tilt = std::acos(run.up->up.z()) * 180.0 / M_PI;
+  EXPECT_GT(tilt, 10.0);
+  // The last scan, placed by the levelled trajectory: its floor's normal is the world's z.
+  const std::size_t last = options.frames.back();
+  pcl::PointCloud<pcl::PointXYZ> world;
+  pcl::transformPointCloud(source->scan(last).points, world,
+                           run.trajectory.poses.back().matrix().cast<float>());
+  const Eigen::Vector3d n = floorNormal(world, -0.5 * run.up->height);
+  EXPECT_LT(std::acos(std::abs(n.z())) * 180.0 / M_PI, 1.0);
+  // The first-scan world keeps the first scan's frame: its first pose is the identity.
+  options.world = metricmap::WorldFrame::FirstScan;
+  options.frames = {0, 1};
+  const metricmap::OdometryRun first = metricmap::runOdometry(*source, options);
+  EXPECT_EQ(first.world, metricmap::WorldFrame::FirstScan);
+  EXPECT_FALSE(first.up.has_value());
+  EXPECT_TRUE(first.trajectory.poses[0].isApprox(Eigen::Isometry3d::Identity()));
+  // The same run in the level world differs by the level rotation alone.
+  EXPECT_TRUE(run.trajectory.poses[1].isApprox(run.level * first.trajectory.poses[1], 1e-9));
+}
+
+TEST(LevelFrame, EstimateUpRefusesBadArguments) {
+  std::vector<Eigen::Vector3d> few(10, Eigen::Vector3d(1, 0, -1));
+  EXPECT_THROW(metricmap::estimateUp(few, 0.0), std::invalid_argument);
+  EXPECT_THROW(metricmap::estimateUp(few, 0.1, 90.0), std::invalid_argument);
+  EXPECT_THROW(metricmap::estimateUp(few), metricmap::InputError);
 }
