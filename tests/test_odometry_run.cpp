@@ -13,11 +13,9 @@
 #include "metricmap/sequence/odometry_run.h"
 #include "shared_data.h"
 
-#include <pcl/ModelCoefficients.h>
 #include <pcl/common/transforms.h>
-#include <pcl/sample_consensus/method_types.h>
-#include <pcl/sample_consensus/model_types.h>
-#include <pcl/segmentation/sac_segmentation.h>
+#include <pcl/sample_consensus/ransac.h>
+#include <pcl/sample_consensus/sac_model_plane.h>
 
 namespace {
 
@@ -100,25 +98,24 @@ namespace {
 
 const std::string kNclt = std::string(METRICMAP_SHARED_DATA_DIR) + "/nclt_2013_01_10_keyframes";
 
-// The plane of the points of `cloud` below `below` (z), by PCL's RANSAC around z.
+// The largest plane among the points of `cloud` below `below` (z): PCL's RANSAC over planes of
+// any orientation, refined by least squares.
 Eigen::Vector3d floorNormal(const pcl::PointCloud<pcl::PointXYZ>& cloud, double below) {
   auto low = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   for (const auto& p : cloud)
-    if (std::isfinite(p.z) && p.z < below) low->push_back(p);
-  pcl::SACSegmentation<pcl::PointXYZ> seg;
-  seg.setOptimizeCoefficients(true);
-  seg.setModelType(pcl::SACMODEL_PERPENDICULAR_PLANE);
-  seg.setMethodType(pcl::SAC_RANSAC);
-  seg.setAxis(Eigen::Vector3f::UnitZ());
-  seg.setEpsAngle(static_cast<float>(30.0 * M_PI / 180.0));
-  seg.setDistanceThreshold(0.05);
-  seg.setInputCloud(low);
-  pcl::PointIndices inliers;
-  pcl::ModelCoefficients c;
-  seg.segment(inliers, c);
-  EXPECT_GT(inliers.indices.size(), 200u);
-  Eigen::Vector3d n(c.values.at(0), c.values.at(1), c.values.at(2));
-  return n.normalized();
+    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && p.z < below)
+      low->push_back(p);
+  auto model = std::make_shared<pcl::SampleConsensusModelPlane<pcl::PointXYZ>>(low, false);
+  pcl::RandomSampleConsensus<pcl::PointXYZ> sac(model, 0.05);
+  sac.setMaxIterations(1000);
+  EXPECT_TRUE(sac.computeModel(0));
+  pcl::Indices inliers;
+  sac.getInliers(inliers);
+  EXPECT_GT(inliers.size(), 200u);
+  Eigen::VectorXf coeff(4), refined(4);
+  sac.getModelCoefficients(coeff);
+  model->optimizeModelCoefficients(inliers, coeff, refined);
+  return Eigen::Vector3d(refined[0], refined[1], refined[2]).normalized();
 }
 
 }  // namespace
@@ -135,6 +132,16 @@ TEST(LevelFrame, UpOfNcltKeyframesAgreesWithTheReferenceWithinOneDegree) {
     EXPECT_LT(angleDeg(Eigen::Quaterniond::FromTwoVectors(up.up, ref_up).toRotationMatrix()), 1.0)
         << "keyframe " << k;
   }
+  // The level world of a run: its z, seen from the first scan, is the reference's up there.
+  metricmap::OdometryRunOptions options;
+  options.config.threads = 1;
+  options.frames = {0, 1};
+  const metricmap::OdometryRun run = metricmap::runOdometry(*source, options);
+  ASSERT_EQ(run.world, metricmap::WorldFrame::Level);
+  const Eigen::Vector3d world_z_in_first =
+      run.level.linear().transpose() * Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d ref_up = ref[0].linear().transpose() * Eigen::Vector3d::UnitZ();
+  EXPECT_LT(std::acos(std::min(1.0, world_z_in_first.dot(ref_up))) * 180.0 / M_PI, 1.0);
 }
 
 TEST(LevelFrame, TiltedHandCarriedScannerGivesALevelFloor) {

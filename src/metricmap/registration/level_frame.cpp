@@ -4,12 +4,10 @@
 #include <stdexcept>
 #include <string>
 
-#include <pcl/ModelCoefficients.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
-#include <pcl/sample_consensus/method_types.h>
-#include <pcl/sample_consensus/model_types.h>
-#include <pcl/segmentation/sac_segmentation.h>
+#include <pcl/sample_consensus/ransac.h>
+#include <pcl/sample_consensus/sac_model_perpendicular_plane.h>
 
 #include "metricmap/common/format_number.h"
 #include "metricmap/exceptions.h"
@@ -34,48 +32,43 @@ UpEstimate estimateUp(const std::vector<Eigen::Vector3d>& points, double distanc
                                      static_cast<float>(p.z())));
   }
   constexpr std::size_t kMinInliers = 50;
-  UpEstimate best;
-  for (int attempt = 0; attempt < 3 && cloud->size() >= kMinInliers; ++attempt) {
-    pcl::SACSegmentation<pcl::PointXYZ> seg;
-    seg.setOptimizeCoefficients(true);
-    seg.setModelType(pcl::SACMODEL_PERPENDICULAR_PLANE);
-    seg.setMethodType(pcl::SAC_RANSAC);
-    seg.setAxis(Eigen::Vector3f::UnitZ());
-    seg.setEpsAngle(static_cast<float>(max_tilt_deg * M_PI / 180.0));
-    seg.setDistanceThreshold(distance);
-    seg.setMaxIterations(500);
-    seg.setInputCloud(cloud);
-    pcl::PointIndices inliers;
-    pcl::ModelCoefficients c;
-    seg.segment(inliers, c);
-    if (inliers.indices.size() < kMinInliers || c.values.size() != 4) break;
-    Eigen::Vector3d n(c.values[0], c.values[1], c.values[2]);
-    double d = c.values[3];
-    const double len = n.norm();
-    n /= len;
-    d /= len;
-    if (d < 0.0) {  // orient the normal towards the sensor (the origin above the plane)
-      n = -n;
-      d = -d;
-    }
-    if (n.z() >= std::cos(max_tilt_deg * M_PI / 180.0)) {
-      best.up = n;
-      best.height = d;
-      best.inliers = inliers.indices.size();
-      return best;
-    }
-    // A steep plane (a wall's foot): drop it and look again.
-    pcl::PointCloud<pcl::PointXYZ> rest;
-    std::vector<bool> out(cloud->size(), false);
-    for (int i : inliers.indices) out[static_cast<std::size_t>(i)] = true;
-    for (std::size_t i = 0; i < cloud->size(); ++i)
-      if (!out[i]) rest.push_back((*cloud)[i]);
-    *cloud = std::move(rest);
+  const std::string none = "up estimate: no ground plane (at least " + std::to_string(kMinInliers) +
+                           " points below the sensor within " + formatNumber(distance) +
+                           " m of a plane tilted less than " + formatNumber(max_tilt_deg) +
+                           " deg) in the first scan";
+  if (cloud->size() < kMinInliers) throw InputError(none);
+  // RANSAC over planes within the tilt of the sensor's z (fixed seed), then least squares over
+  // the inliers and the inliers of the refined plane.
+  auto model = std::make_shared<pcl::SampleConsensusModelPerpendicularPlane<pcl::PointXYZ>>(
+      cloud, /*random=*/false);
+  model->setAxis(Eigen::Vector3f::UnitZ());
+  model->setEpsAngle(max_tilt_deg * M_PI / 180.0);
+  pcl::RandomSampleConsensus<pcl::PointXYZ> sac(model, distance);
+  sac.setMaxIterations(500);
+  sac.setProbability(0.99);
+  if (!sac.computeModel(0)) throw InputError(none);
+  pcl::Indices inliers;
+  sac.getInliers(inliers);
+  Eigen::VectorXf coeff(4), refined(4);
+  sac.getModelCoefficients(coeff);
+  model->optimizeModelCoefficients(inliers, coeff, refined);
+  model->selectWithinDistance(refined, distance, inliers);
+  if (inliers.size() < kMinInliers || refined.size() != 4) throw InputError(none);
+  Eigen::Vector3d n(refined[0], refined[1], refined[2]);
+  double d = refined[3];
+  const double len = n.norm();
+  n /= len;
+  d /= len;
+  if (d < 0.0) {  // orient the normal towards the sensor (the origin above the plane)
+    n = -n;
+    d = -d;
   }
-  throw InputError("up estimate: no ground plane (at least " + std::to_string(kMinInliers) +
-                   " points below the sensor within " + formatNumber(distance) +
-                   " m of a plane tilted less than " + formatNumber(max_tilt_deg) +
-                   " deg) in the first scan");
+  if (n.z() < std::cos(max_tilt_deg * M_PI / 180.0)) throw InputError(none);
+  UpEstimate best;
+  best.up = n;
+  best.height = d;
+  best.inliers = inliers.size();
+  return best;
 }
 
 Eigen::Isometry3d levelRotation(const Eigen::Vector3d& up) {

@@ -19,7 +19,7 @@ struct UpEstimate {
 };
 
 /// \brief The largest plane below the sensor whose normal lies within `max_tilt_deg` of the
-/// sensor's z axis (RANSAC, PCL's SACMODEL_PERPENDICULAR_PLANE, fixed seed), refined by least
+/// sensor's z axis (RANSAC over PCL's perpendicular-plane model, fixed seed), refined by least
 /// squares over its inliers.
 /// \param distance RANSAC inlier distance (m), > 0
 /// \throws std::invalid_argument for a distance or tilt out of range
