@@ -39,6 +39,7 @@ void run(const OdometryOptions& o) {
   if (o.prediction_rotation >= 0.0) ro.config.prediction_rotation = o.prediction_rotation;
   if (o.hypothesis_count >= 0) ro.config.hypothesis_count = o.hypothesis_count;
   applyRangeOptions(o.ranges, o.profile, source->info(), ro.config, ro.profile);
+  ro.profile.motion = o.min_support < 0.0 && o.prediction_rotation < 0.0;
   ro.deskew = o.no_deskew        ? DeskewMode::Off
               : o.deskew_azimuth ? DeskewMode::Azimuth
                                  : DeskewMode::Auto;
@@ -92,14 +93,17 @@ void addOdometryCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--min-support", o->min_support,
                   "Try the motion hypotheses when fewer than this fraction of a scan's points "
-                  "find a map point within a voxel (0: never; default: the profile's)")
+                  "find a map point within a voxel (0: never, 1: every scan; default: 1 for scans "
+                  "at least 0.3 s apart, else 0); given, it or --prediction-rotation replaces the "
+                  "profile's motion model")
       ->check(CLI::Range(0.0, 1.0));
   sub->add_option("--support-distance", o->support_distance,
                   "Distance (m) at which the hypotheses' support is compared (0: the voxel)")
       ->check(kFiniteNonNegative);
-  sub->add_option("--prediction-rotation", o->prediction_rotation,
-                  "Share of the last motion's rotation the prediction repeats (1: constant "
-                  "velocity, 0: translation only)")
+  sub->add_option(
+         "--prediction-rotation", o->prediction_rotation,
+         "Share of the last motion's rotation the prediction repeats (1: constant "
+         "velocity, 0: translation only; default: 0 for scans at least 0.3 s apart, else 1)")
       ->check(CLI::Range(0.0, 1.0));
   sub->add_option("--hypothesis-count", o->hypothesis_count,
                   "Hypotheses registered by ICP when they are tried (1..16)")

@@ -91,8 +91,13 @@ OdometryRun runOdometry(ScanSource& source, const OdometryRunOptions& options,
       const SensorProfileRequest& req = options.profile;
       if (req.max_range || req.min_range || req.voxel_size) {
         run.profile = profileScan(toPoints3d(scan.points));
-        config = applyProfile(config, run.profile, req);
       }
+      if (req.motion && info.stamps.size() == source.size()) {
+        std::vector<double> stamps;
+        for (std::size_t f : frames) stamps.push_back(info.stamps[f]);
+        profileStamps(run.profile, stamps);
+      }
+      config = applyProfile(config, run.profile, req);
       bool deskew = false;
       sweepFractions(scan, options.deskew, deskew);
       config.deskew = deskew;
