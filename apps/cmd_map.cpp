@@ -30,6 +30,7 @@ struct MapOptions {
   std::optional<double> min_height, max_height;
   unsigned min_hits = 1;
   Occupancy2DOptions grid;
+  std::string world = "level";
 };
 
 void run(const MapOptions& o) {
@@ -40,6 +41,7 @@ void run(const MapOptions& o) {
   if (o.poses == "odometry") {
     OdometryRunOptions ro;
     ro.frames = frames;
+    ro.world = parseWorldFrame(o.world);
     applyRangeOptions(o.ranges, o.profile, source->info(), ro.config, ro.profile);
     poses = odometrySensorPoses(runOdometryNamed(*source, ro), source->info());
   } else {
@@ -94,6 +96,11 @@ void addMapCommand(CLI::App& app) {
       ->check(CLI::IsMember({"reference", "odometry"}))
       ->capture_default_str();
   addRangeOptions(*sub, o->ranges, o->profile);
+  sub->add_option("--world-frame", o->world,
+                  "With --poses odometry: the map's world, level (z up along the first scan's "
+                  "ground normal) or first-scan (the first scan's sensor frame)")
+      ->check(CLI::IsMember({"level", "first-scan"}))
+      ->capture_default_str();
   sub->add_option("--out-map", o->out_map,
                   "map_server map: M.pgm, M.yaml, M_preview.png, M_heat.png (black: at least "
                   "--min-hits points in the cell)")
@@ -128,6 +135,7 @@ void addMapCommand(CLI::App& app) {
                                  "give --out-map, --out-occupancy-2d and/or --out-cloud");
     }
     checkOccupancy2DOptions(*sub, o->grid);
+    refuseIgnored(*sub, "--world-frame", o->poses == "odometry", "without --poses odometry");
     refuseIgnored(*sub, "--pcd-format", !o->out_cloud.empty(), "without --out-cloud");
     checkRangeOptions(*sub, o->ranges);
     checkSourceOptions(*sub, o->source);

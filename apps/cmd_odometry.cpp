@@ -19,10 +19,12 @@ namespace {
 
 struct OdometryOptions {
   SourceOptions source;
-  std::string out_poses, pose_format = "kitti", format = "table", profile;
+  std::string out_poses, pose_format = "kitti", format = "table", profile, world = "level";
   bool deskew_azimuth = false, no_deskew = false;
   RangeOptions ranges;
   unsigned threads = 0;
+  double min_support = -1.0, support_distance = -1.0, prediction_rotation = -1.0;
+  int hypothesis_count = -1;
 };
 
 void run(const OdometryOptions& o) {
@@ -31,7 +33,13 @@ void run(const OdometryOptions& o) {
   OdometryRunOptions ro;
   ro.frames = selectedFrames(o.source, *source);
   ro.config.threads = o.threads;
+  ro.world = parseWorldFrame(o.world);
+  if (o.min_support >= 0.0) ro.config.min_support = o.min_support;
+  if (o.support_distance >= 0.0) ro.config.support_distance = o.support_distance;
+  if (o.prediction_rotation >= 0.0) ro.config.prediction_rotation = o.prediction_rotation;
+  if (o.hypothesis_count >= 0) ro.config.hypothesis_count = o.hypothesis_count;
   applyRangeOptions(o.ranges, o.profile, source->info(), ro.config, ro.profile);
+  ro.profile.motion = o.min_support < 0.0 && o.prediction_rotation < 0.0;
   ro.deskew = o.no_deskew        ? DeskewMode::Off
               : o.deskew_azimuth ? DeskewMode::Azimuth
                                  : DeskewMode::Auto;
@@ -67,7 +75,7 @@ void addOdometryCommand(CLI::App& app) {
   sub->add_flag("--no-deskew", o->no_deskew, "Never deskew, even with per-point times");
   sub->add_option("--out-poses", o->out_poses,
                   "Write the poses: for KITTI camera 0 in the frame of camera 0 of the first "
-                  "frame (as poses/NN.txt), otherwise the sensor in the frame of the first scan")
+                  "frame (as poses/NN.txt), otherwise the sensor in the world of --world-frame")
       ->check(kOutputFile);
   sub->add_option("--pose-format", o->pose_format,
                   "kitti (12 numbers) or tum (stamp tx ty tz qx qy qz qw)")
@@ -78,6 +86,28 @@ void addOdometryCommand(CLI::App& app) {
                   "not depend on it")
       ->check(countIn(0, 1024))
       ->capture_default_str();
+  sub->add_option("--world-frame", o->world,
+                  "World of the poses: level (z up along the first scan's ground normal, x/y "
+                  "level) or first-scan (the first scan's sensor frame); KITTI keeps camera 0")
+      ->check(CLI::IsMember({"level", "first-scan"}))
+      ->capture_default_str();
+  sub->add_option("--min-support", o->min_support,
+                  "Try the motion hypotheses when fewer than this fraction of a scan's points "
+                  "find a map point within a voxel (0: never, 1: every scan; default: 1 for scans "
+                  "at least 0.3 s apart, else 0); given, it or --prediction-rotation replaces the "
+                  "profile's motion model")
+      ->check(CLI::Range(0.0, 1.0));
+  sub->add_option("--support-distance", o->support_distance,
+                  "Distance (m) at which the hypotheses' support is compared (0: the voxel)")
+      ->check(kFiniteNonNegative);
+  sub->add_option(
+         "--prediction-rotation", o->prediction_rotation,
+         "Share of the last motion's rotation the prediction repeats (1: constant "
+         "velocity, 0: translation only; default: 0 for scans at least 0.3 s apart, else 1)")
+      ->check(CLI::Range(0.0, 1.0));
+  sub->add_option("--hypothesis-count", o->hypothesis_count,
+                  "Hypotheses registered by ICP when they are tried (1..16)")
+      ->check(CLI::Range(1, 16));
   addFormatOption(*sub, o->format, {"table", "json"});
   sub->callback([o, sub] {
     refuseIgnored(*sub, "--pose-format", !o->out_poses.empty(), "without --out-poses");

@@ -1,5 +1,7 @@
 #include "odometry_report.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -27,6 +29,8 @@ nlohmann::json frameJson(const OdometryFrame& f, const Eigen::Isometry3d& p, boo
                         {"threshold", f.result.threshold},
                         {"degenerate_directions", f.result.degenerate_directions},
                         {"restarted", f.result.restarted},
+                        {"support", f.result.support},
+                        {"hypothesis", f.result.hypothesis},
                         {"step", first ? nlohmann::json(nullptr) : nlohmann::json(f.step_m)},
                         {"pose_file_difference", nullptr}};
   for (int i = 0; i < 12; ++i) row["pose"].push_back(p.matrix()(i / 4, i % 4));
@@ -78,6 +82,9 @@ std::string odometryReport(const std::string& format, const std::string& profile
         {"source", info.path},
         {"source_kind", info.kind},
         {"convention", r.convention},
+        {"world_frame", worldFrameName(r.world)},
+        {"up_in_first_scan",
+         r.up ? nlohmann::json({r.up->up.x(), r.up->up.y(), r.up->up.z()}) : nlohmann::json()},
         {"settings", settings},
         {"frames", rows},
         {"pose_file", info.reference_path.empty() ? nlohmann::json(nullptr)
@@ -108,6 +115,18 @@ std::string odometryReport(const std::string& format, const std::string& profile
                 "threshold cap %g m, deskew %s (%s)\n",
                 c.max_range, c.min_range, c.voxel_size, c.coarse_voxel_size, c.max_threshold,
                 r.deskewed ? "on" : "off", origin.c_str());
+  report += line;
+  if (r.up) {
+    std::snprintf(line, sizeof line,
+                  "world frame: level (z up along the first scan's ground normal %.4f %.4f %.4f, "
+                  "%.2f deg from the sensor's z; sensor %.2f m above the ground)\n",
+                  r.up->up.x(), r.up->up.y(), r.up->up.z(),
+                  std::acos(std::min(1.0, r.up->up.z())) * 180.0 / M_PI, r.up->height);
+  } else {
+    std::snprintf(line, sizeof line, "world frame: %s\n",
+                  r.convention == "sensor" ? "first-scan (the first scan's sensor frame)"
+                                           : r.convention.c_str());
+  }
   report += line;
   if (r.rpe) {
     const ErrorStatistics& t = r.rpe->translation_stats;

@@ -109,3 +109,43 @@ TEST(GivenOptions, RunOdometryRefusesAGivenMinRangeAboveTheChosenWindow) {
 
 }  // namespace
 }  // namespace metricmap
+
+namespace metricmap {
+namespace {
+
+// Scans 0.8 s apart (a drive's keyframes) take the keyframe motion model, 0.1 s apart (a
+// spinning LiDAR's sweeps) keep the constant-velocity one; a given motion model is kept.
+TEST(GivenOptions, TheScanIntervalChoosesTheMotionModel) {
+  auto stamps = [](double dt, int n) {
+    std::vector<double> s;
+    for (int i = 0; i < n; ++i) s.push_back(100.0 + dt * i + (i % 2 ? 0.01 : 0.0));
+    return s;
+  };
+  SensorProfile keyframes, sweeps, unknown;
+  profileStamps(keyframes, stamps(0.8, 9));
+  profileStamps(sweeps, stamps(0.1, 9));
+  profileStamps(unknown, {100.0});
+  EXPECT_NEAR(keyframes.scan_interval, 0.8, 0.011);
+  EXPECT_TRUE(keyframes.keyframes);
+  EXPECT_NEAR(sweeps.scan_interval, 0.1, 0.011);
+  EXPECT_FALSE(sweeps.keyframes);
+  EXPECT_EQ(unknown.scan_interval, 0.0);
+  EXPECT_FALSE(unknown.keyframes);
+
+  const LidarOdometryConfig given;
+  SensorProfileRequest request;
+  const LidarOdometryConfig k = applyProfile(given, keyframes, request);
+  EXPECT_EQ(k.prediction_rotation, 0.0);
+  EXPECT_EQ(k.min_support, 1.0);
+  EXPECT_EQ(k.hypothesis_count, 3);
+  const LidarOdometryConfig s = applyProfile(given, sweeps, request);
+  EXPECT_EQ(s.prediction_rotation, given.prediction_rotation);
+  EXPECT_EQ(s.min_support, given.min_support);
+  request.motion = false;
+  const LidarOdometryConfig g = applyProfile(given, keyframes, request);
+  EXPECT_EQ(g.prediction_rotation, given.prediction_rotation);
+  EXPECT_EQ(g.min_support, given.min_support);
+}
+
+}  // namespace
+}  // namespace metricmap

@@ -1,5 +1,6 @@
 #include "metricmap/registration/lidar_odometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -9,6 +10,7 @@
 #include "metricmap/common/format_number.h"
 #include "metricmap/exceptions.h"
 #include "metricmap/registration/deskew.h"
+#include "metricmap/registration/motion_hypotheses.h"
 #include "metricmap/registration/point_to_point_icp.h"
 #include "metricmap/registration/voxel_downsample.h"
 
@@ -35,11 +37,30 @@ const LidarOdometryConfig& validated(const LidarOdometryConfig& c) {
         std::pair{c.degeneracy_ratio, "degeneracy_ratio"},
         std::pair{c.min_inlier_fraction, "min_inlier_fraction"},
         std::pair{c.max_threshold, "max_threshold"},
-        std::pair{c.coarse_voxel_size, "coarse_voxel_size"}}) {
+        std::pair{c.coarse_voxel_size, "coarse_voxel_size"},
+        std::pair{c.support_distance, "support_distance"}}) {
     if (!(std::isfinite(v) && v >= 0.0)) {
       throw std::invalid_argument(std::string(name) + " must be a finite number >= 0, got " +
                                   formatNumber(v));
     }
+  }
+  if (!(std::isfinite(c.prediction_rotation) && c.prediction_rotation >= 0.0 &&
+        c.prediction_rotation <= 1.0)) {
+    throw std::invalid_argument("prediction_rotation must be in [0, 1], got " +
+                                formatNumber(c.prediction_rotation));
+  }
+  if (!(std::isfinite(c.min_support) && c.min_support >= 0.0 && c.min_support <= 1.0)) {
+    throw std::invalid_argument("min_support must be in [0, 1], got " +
+                                formatNumber(c.min_support));
+  }
+  if (!(std::isfinite(c.hypothesis_step_deg) && c.hypothesis_step_deg > 0.0 &&
+        c.hypothesis_step_deg <= 90.0)) {
+    throw std::invalid_argument("hypothesis_step_deg must be in (0, 90], got " +
+                                formatNumber(c.hypothesis_step_deg));
+  }
+  if (c.hypothesis_count < 1 || c.hypothesis_count > 16) {
+    throw std::invalid_argument("hypothesis_count must be in 1..16, got " +
+                                std::to_string(c.hypothesis_count));
   }
   if (c.min_points < 1) {
     throw std::invalid_argument("min_points must be >= 1, got " + std::to_string(c.min_points));
@@ -67,6 +88,17 @@ PointToPointIcpParams icpParams(const LidarOdometryConfig& c, double threshold,
   p.degeneracy_ratio = c.degeneracy_ratio;
   p.threads = c.threads;
   return p;
+}
+
+/// The last motion with its rotation scaled by `share` (about the same axis).
+Eigen::Isometry3d predictedMotion(const Eigen::Isometry3d& velocity, double share) {
+  if (share == 1.0) return velocity;
+  Eigen::AngleAxisd aa(velocity.linear());
+  aa.angle() *= share;
+  Eigen::Isometry3d m = Eigen::Isometry3d::Identity();
+  m.linear() = aa.toRotationMatrix();
+  m.translation() = velocity.translation();
+  return m;
 }
 
 bool finitePoint(const pcl::PointXYZ& p) {
@@ -192,7 +224,7 @@ void LidarOdometry::alignFrame(const Eigen::Isometry3d& velocity, std::size_t in
                                const std::string& label, OdometryResult& res) {
   const bool coarse = config_.coarse_voxel_size > 0.0;
   const Eigen::Isometry3d& last = poses_.back();
-  res.prediction = last * velocity;
+  res.prediction = last * predictedMotion(velocity, config_.prediction_rotation);
   Eigen::Isometry3d initial = res.prediction;
   if (coarse) {
     const double threshold = coarse_threshold_.threshold();
@@ -210,9 +242,10 @@ void LidarOdometry::alignFrame(const Eigen::Isometry3d& velocity, std::size_t in
   if (config_.max_threshold > 0.0) res.threshold = std::min(res.threshold, config_.max_threshold);
   // Without a coarse stage the fine one recovers from a bad prediction itself; after one, its
   // guess is already the coarse map's answer.
-  const PointToPointIcpResult icp =
+  PointToPointIcpResult icp =
       alignWithRecovery(source_, map_, initial, coarse ? nullptr : &last, res.threshold,
                         config_.max_threshold, config_.convergence, res.restarted);
+  tryHypotheses(velocity, icp, initial, res);
   if (icp.correspondences < kMinOdometryPairs) {
     throw InputError(label + ": the registration paired " + std::to_string(icp.correspondences) +
                      " of its " + std::to_string(source_.size()) +
@@ -230,6 +263,48 @@ void LidarOdometry::alignFrame(const Eigen::Isometry3d& velocity, std::size_t in
   Eigen::Isometry3d deviation;  // from the guess the fine ICP started at
   deviation.matrix() = initial.matrix().inverse() * res.pose.matrix();
   threshold_.update(deviation);
+}
+
+void LidarOdometry::tryHypotheses(const Eigen::Isometry3d& velocity, PointToPointIcpResult& icp,
+                                  Eigen::Isometry3d& start, OdometryResult& res) {
+  const double distance =
+      config_.support_distance > 0.0 ? config_.support_distance : config_.voxel_size;
+  PoseSupport best = poseSupport(source_, map_, icp.pose, distance);
+  res.support = best.fraction(source_.size());
+  if (!(res.support < config_.min_support) || poses_.size() < 2) return;
+  const std::vector<Eigen::Isometry3d> starts =
+      motionHypotheses(poses_.back(), velocity, config_.hypothesis_step_deg);
+  // Rank the other starts by their support as they are, then register the best few.
+  std::vector<std::pair<PoseSupport, std::size_t>> ranked;
+  for (std::size_t k = 1; k < starts.size(); ++k) {
+    ranked.emplace_back(poseSupport(source_, map_, starts[k], distance), k);
+  }
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const auto& a, const auto& b) { return a.first.betterThan(b.first); });
+  ranked.resize(std::min(ranked.size(), static_cast<std::size_t>(config_.hypothesis_count)));
+  res.hypothesis = 0;
+  for (const auto& [support, k] : ranked) {
+    const double threshold = std::max(res.threshold, distance);
+    PointToPointIcpResult r = alignPointToPoint(
+        source_, map_, starts[k], icpParams(config_, threshold, config_.convergence), &icp_);
+    if (config_.fine_threshold > 0.0 && threshold > config_.fine_threshold) {
+      const int before = r.iterations;
+      r = alignPointToPoint(source_, map_, r.pose,
+                            icpParams(config_, config_.fine_threshold, config_.convergence), &icp_);
+      r.iterations += before;
+    }
+    const PoseSupport s = poseSupport(source_, map_, r.pose, distance);
+    if (s.betterThan(best)) {
+      r.iterations += icp.iterations;
+      icp = r;
+      best = s;
+      start = starts[k];
+      res.hypothesis = static_cast<int>(k);
+    } else {
+      icp.iterations += r.iterations;
+    }
+  }
+  res.support = best.fraction(source_.size());
 }
 
 void LidarOdometry::addFrameToMaps(const Eigen::Isometry3d& pose) {

@@ -39,6 +39,12 @@ struct OdometryResult {
   /// \brief Where the coarse stage put the scan (the prediction when there is none).
   Eigen::Isometry3d coarse = Eigen::Isometry3d::Identity();
   int coarse_iterations = 0;  ///< Gauss-Newton steps of the coarse stage
+  /// \brief Fraction of the downsampled points with a map point within the support distance
+  /// at the pose (0 for the first scan).
+  double support = 0.0;
+  /// \brief Which start won when the hypotheses were tried (motionHypotheses' order: 0 the
+  /// prediction, 1 its translation alone, 2 zero motion, 3.. turns); -1: not tried.
+  int hypothesis = -1;
 };
 
 /// \brief Fewest point pairs (source points with a map point within the threshold) a registered
@@ -98,6 +104,10 @@ class LidarOdometry {
   /// prediction); fills `res`. \throws InputError naming `label` when too few pairs are found.
   void alignFrame(const Eigen::Isometry3d& velocity, std::size_t in_range, const std::string& label,
                   OdometryResult& res);
+  /// When the result's support is below config_.min_support, ICP from the best-supported motion
+  /// hypotheses; replaces `icp` and `start` with the best-supported result.
+  void tryHypotheses(const Eigen::Isometry3d& velocity, PointToPointIcpResult& icp,
+                     Eigen::Isometry3d& start, OdometryResult& res);
   /// Adds the prepared frame at `pose` to the local maps.
   void addFrameToMaps(const Eigen::Isometry3d& pose);
 

@@ -59,6 +59,22 @@ struct LidarOdometryConfig {
   /// turns of tens of degrees the prediction misses), then on the fine map from there (the
   /// accuracy of the fine voxel). For sensors that turn faster than a car (hand-carried).
   double coarse_voxel_size = 0.0;
+  /// \brief Share of the last motion's rotation the prediction repeats, in [0, 1]: 1 is the
+  /// constant-velocity model; 0 repeats only the translation (a platform whose rotation between
+  /// scans swings back and forth, as a balancing Segway's between keyframes).
+  double prediction_rotation = 1.0;
+  /// \brief When the registered scan's support (the fraction of its downsampled points with a
+  /// map point within `support_distance`) is below this, the motions a robot allows are tried
+  /// as well (zero motion, the prediction's translation without its rotation, turns about each
+  /// axis: motion_hypotheses.h) and the best-supported result kept. 0: never (one ICP per scan).
+  double min_support = 0.0;
+  /// \brief Distance (m) at which supports are compared; 0: the voxel size.
+  double support_distance = 0.0;
+  /// \brief Angle (deg) between the turned hypotheses (also twice it about z), in (0, 90].
+  double hypothesis_step_deg = 5.0;
+  /// \brief Hypotheses, besides the prediction, registered by ICP when they are tried: the
+  /// best-supported starts (1..16).
+  int hypothesis_count = 2;
   /// \brief Threads for the scan-to-map pairing (0: all hardware threads), kept by the object
   /// from scan to scan. The poses do not depend on it: the normal equations are summed in a
   /// fixed order.

@@ -59,6 +59,14 @@ std::vector<double> sweepFractions(const Scan& scan, DeskewMode mode, bool& used
 
 }  // namespace
 
+const char* worldFrameName(WorldFrame w) { return w == WorldFrame::Level ? "level" : "first-scan"; }
+
+WorldFrame parseWorldFrame(const std::string& name) {
+  if (name == "level") return WorldFrame::Level;
+  if (name == "first-scan") return WorldFrame::FirstScan;
+  throw std::invalid_argument("world frame must be level or first-scan, got '" + name + "'");
+}
+
 OdometryRun runOdometry(ScanSource& source, const OdometryRunOptions& options,
                         const OdometryObserver& observer) {
   const std::vector<std::size_t> frames = selectFrames(options.frames, source);
@@ -83,14 +91,29 @@ OdometryRun runOdometry(ScanSource& source, const OdometryRunOptions& options,
       const SensorProfileRequest& req = options.profile;
       if (req.max_range || req.min_range || req.voxel_size) {
         run.profile = profileScan(toPoints3d(scan.points));
-        config = applyProfile(config, run.profile, req);
       }
+      if (req.motion && info.stamps.size() == source.size()) {
+        std::vector<double> stamps;
+        for (std::size_t f : frames) stamps.push_back(info.stamps[f]);
+        profileStamps(run.profile, stamps);
+      }
+      config = applyProfile(config, run.profile, req);
       bool deskew = false;
       sweepFractions(scan, options.deskew, deskew);
       config.deskew = deskew;
       run.deskewed = deskew;
       run.config = config;
       odometry.emplace(config);
+      if (options.world == WorldFrame::Level && !info.conventions.poses_of_base) {
+        try {
+          run.up = estimateUp(toPoints3d(scan.points));
+        } catch (const InputError& e) {
+          throw InputError(scan.name + ": " + e.what() + " (--world-frame first-scan keeps the " +
+                           "first scan's frame)");
+        }
+        run.level = levelRotation(run.up->up);
+        run.world = WorldFrame::Level;
+      }
     }
     bool used = false;
     const std::vector<double> times = sweepFractions(scan, options.deskew, used);
@@ -106,10 +129,10 @@ OdometryRun runOdometry(ScanSource& source, const OdometryRunOptions& options,
     f.index = frames[k];
     f.name = scan.name;
     f.stamp = scan.stamp;
-    const Eigen::Isometry3d pose = a * f.result.pose * a_inv;
+    const Eigen::Isometry3d pose = run.level * a * f.result.pose * a_inv;
     run.trajectory.poses.push_back(pose);
     if (std::isfinite(scan.stamp)) run.trajectory.stamps.push_back(scan.stamp);
-    if (has_ref) ref_out.push_back(a * info.reference.poses[frames[k]] * a_inv);
+    if (has_ref) ref_out.push_back(a * info.reference.poses[frames[k]] * a_inv);  // own world
     if (k > 0) {
       const Eigen::Isometry3d motion = inverseOf(run.trajectory.poses[k - 1]) * pose;
       f.step_m = motion.translation().norm();

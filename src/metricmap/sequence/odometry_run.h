@@ -17,6 +17,7 @@
 #include "metricmap/datasets/scan_source.h"
 #include "metricmap/evaluation/relative_error.h"
 #include "metricmap/evaluation/step_failures.h"
+#include "metricmap/registration/level_frame.h"
 #include "metricmap/registration/lidar_odometry.h"
 #include "metricmap/sequence/sensor_profile.h"
 
@@ -29,6 +30,20 @@ enum class DeskewMode {
   Azimuth,  ///< times from the azimuth of a spinning sensor (KITTI's HDL-64E)
 };
 
+/// \brief The world the poses of a run (and the maps built from them) are expressed in.
+enum class WorldFrame {
+  /// \brief Gravity-aligned: z up (the normal of the first scan's ground plane), x/y level, the
+  /// origin and heading of the first scan's sensor. For sources in the sensor convention;
+  /// KITTI keeps its camera-0 convention (the camera of a car is level).
+  Level,
+  FirstScan,  ///< the first scan's sensor frame (or camera 0 of the first frame for KITTI)
+};
+
+/// \brief "level" or "first-scan".
+const char* worldFrameName(WorldFrame w);
+/// \brief The inverse of worldFrameName. \throws std::invalid_argument for another name
+WorldFrame parseWorldFrame(const std::string& name);
+
 /// \brief Settings of an odometry run.
 struct OdometryRunOptions {
   /// \brief The odometry's parameters; range window and voxel are replaced by the sensor
@@ -39,6 +54,7 @@ struct OdometryRunOptions {
   /// \brief Scan indices in acquisition order (strictly increasing); empty: every scan.
   std::vector<std::size_t> frames;
   DeskewMode deskew = DeskewMode::Auto;
+  WorldFrame world = WorldFrame::Level;
 };
 
 /// \brief One registered frame.
@@ -64,6 +80,13 @@ struct OdometryRun {
   SensorProfile profile;       ///< what the first scan gave
   bool deskewed = false;
   std::string convention;  ///< "kitti camera 0" or "sensor"
+  /// \brief The world of `trajectory`: Level when it was asked and the source's convention is
+  /// the sensor's, else FirstScan.
+  WorldFrame world = WorldFrame::FirstScan;
+  /// \brief With a level world: the ground plane of the first scan (its normal is up, in the
+  /// first scan's sensor frame), and the rotation first-scan frame -> level world.
+  std::optional<UpEstimate> up;
+  Eigen::Isometry3d level = Eigen::Isometry3d::Identity();
   double read_seconds = 0.0;
   /// \brief The source's reference poses of the frames, in the output convention (empty when
   /// the source has none).

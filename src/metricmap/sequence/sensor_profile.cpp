@@ -14,6 +14,8 @@ constexpr double kVoxelPerRange = 1.0 / 75.0, kMinVoxel = 0.1, kMaxVoxel = 1.0;
 constexpr double kMinRangeCap = 3.0;
 constexpr double kCoarseBelow = 0.75, kCoarseFactor = 3.0, kThresholdCap = 2.0;
 constexpr double kFineConvergence = 3e-4;
+constexpr double kKeyframeInterval = 0.3;
+constexpr int kKeyframeHypotheses = 3;
 
 double percentile(std::vector<double>& v, double q) {
   const auto k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1));
@@ -51,8 +53,23 @@ SensorProfile profileScan(const std::vector<Eigen::Vector3d>& points) {
   return p;
 }
 
+void profileStamps(SensorProfile& profile, const std::vector<double>& stamps) {
+  std::vector<double> d;
+  for (std::size_t i = 1; i < stamps.size(); ++i) {
+    const double dt = stamps[i] - stamps[i - 1];
+    if (std::isfinite(dt) && dt > 0.0) d.push_back(dt);
+  }
+  profile.scan_interval = d.empty() ? 0.0 : percentile(d, 0.5);
+  profile.keyframes = profile.scan_interval >= kKeyframeInterval;
+}
+
 LidarOdometryConfig applyProfile(LidarOdometryConfig config, const SensorProfile& profile,
                                  const SensorProfileRequest& request) {
+  if (request.motion && profile.keyframes) {
+    config.prediction_rotation = 0.0;
+    config.min_support = 1.0;
+    config.hypothesis_count = kKeyframeHypotheses;
+  }
   if (!profile.used) return config;
   if (request.max_range) config.max_range = profile.max_range;
   if (request.min_range) config.min_range = profile.min_range;
