@@ -30,7 +30,7 @@ struct MapOptions {
   std::optional<double> min_height, max_height;
   unsigned min_hits = 1;
   Occupancy2DOptions grid;
-  std::string world = "level";
+  std::string world = "first-scan";
 };
 
 void run(const MapOptions& o) {

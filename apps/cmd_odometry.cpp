@@ -19,7 +19,7 @@ namespace {
 
 struct OdometryOptions {
   SourceOptions source;
-  std::string out_poses, pose_format = "kitti", format = "table", profile, world = "level";
+  std::string out_poses, pose_format = "kitti", format = "table", profile, world = "first-scan";
   bool deskew_azimuth = false, no_deskew = false;
   RangeOptions ranges;
   unsigned threads = 0;

@@ -143,6 +143,7 @@ TEST(LevelFrame, UpOfNcltKeyframesAgreesWithTheReferenceUpToTheTerrainSlope) {
   metricmap::OdometryRunOptions options;
   options.config.threads = 1;
   options.frames = {0, 1};
+  options.world = metricmap::WorldFrame::Level;
   const metricmap::OdometryRun run = metricmap::runOdometry(*source, options);
   ASSERT_EQ(run.world, metricmap::WorldFrame::Level);
   const Eigen::Vector3d world_z_in_first =
@@ -154,7 +155,8 @@ TEST(LevelFrame, UpOfNcltKeyframesAgreesWithTheReferenceUpToTheTerrainSlope) {
 TEST(LevelFrame, TiltedHandCarriedScannerGivesALevelFloor) {
   SKIP_WITHOUT_SHARED_DATA(kBalm);
   auto source = metricmap::openScanSource(kBalm);
-  metricmap::OdometryRunOptions options;  // level world by default
+  metricmap::OdometryRunOptions options;
+  options.world = metricmap::WorldFrame::Level;
   options.config.threads = 1;
   options.frames = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
   const metricmap::OdometryRun run = metricmap::runOdometry(*source, options);

@@ -54,7 +54,7 @@ struct OdometryRunOptions {
   /// \brief Scan indices in acquisition order (strictly increasing); empty: every scan.
   std::vector<std::size_t> frames;
   DeskewMode deskew = DeskewMode::Auto;
-  WorldFrame world = WorldFrame::Level;
+  WorldFrame world = WorldFrame::FirstScan;
 };
 
 /// \brief One registered frame.
